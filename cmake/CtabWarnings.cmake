@@ -1,0 +1,13 @@
+# Warnings live in a non-exported INTERFACE target, linked PRIVATE by our own targets.
+add_library(ctab_warnings INTERFACE)
+target_compile_options(ctab_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion -Wnon-virtual-dtor
+  -Wold-style-cast -Wcast-align -Woverloaded-virtual -Wnull-dereference -Wdouble-promotion)
+if(CTAB_WERROR)
+  target_compile_options(ctab_warnings INTERFACE -Werror)
+endif()
+
+add_library(ctab_optimise INTERFACE)
+if(CTAB_NATIVE)
+  target_compile_options(ctab_optimise INTERFACE $<$<CONFIG:Release>:-march=native>)
+endif()

@@ -1,0 +1,94 @@
+#pragma once
+//! MIM-1D normal contact solver (Qazi, Yin, Sebes, Chollet, Pozzolini, VSD 60(4):1322-1340, 2022).
+//!
+//! Method: the potential contact zone is cut into strips of width 2b along y; in strip i the pressure is
+//! semi-elliptic along x (Eq. 7) with half-length a_i tied to its peak pressure by the local Hertz relation
+//! a_i = c_i p0_i (Eq. 26; c_i from strip_compliance.hpp). Unknowns are the strip loads N_i = pi a_i b p0_i
+//! (Appendix 1, Eqs. A1-A4), so that a_i = sqrt(c_i N_i / (pi b)) and the compatibility equations read
+//!   sum_j G_ij(a_j) N_j = delta - h_i   for strips in contact (Eqs. 8-9, 13 and A2),
+//!   N_i = 0 and delta - h_i - u_i <= 0   elsewhere (Eq. 4),
+//! with G_ij = C_ij / (pi a_j b) from strip_kernel.hpp (closed form of Eqs. 10-12).
+//! Iteration (Figure 3): start from the interpenetration zone; solve; drop strips with non-positive load;
+//! update the lengths; re-admit strips that interpenetrate after deformation; repeat. Two update rules:
+//!   FixedPoint - the paper's: solve G(a) N = delta - h with the lengths of the previous iterate;
+//!   Newton     - (default) Newton's method on the same equations, the Jacobian including dG/da da/dN;
+//!                a step that would make a load non-positive falls back to the fixed-point step.
+//! Prescribed load (Eq. 6): a safeguarded Newton iteration on delta. The slope dN/d(delta) = 1^T J^-1 1 comes
+//! from the last factorisation (Eq. 16 is the fallback when no slope is available); the iterate is kept
+//! inside a bracket, bisecting when a step leaves it; the loads are warm-started along J^-1 1.
+//! Validity: half-space (small contact angles across the patch), frictionless, quasi-identical materials;
+//! pressure symmetric in x (no yaw).
+#include <Eigen/Dense>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "ctab/gen/gap_profile.hpp"
+#include "ctab/gen/normal_solution.hpp"
+#include "ctab/gen/strip_compliance.hpp"
+#include "ctab/gen/strip_grid.hpp"
+
+namespace ctab::gen {
+
+enum class Mim1dUpdate : std::int8_t {
+  FixedPoint = 0,  //!< the paper's successive substitution (Figure 3)
+  Newton = 1,      //!< Newton on the strip loads (default)
+};
+
+struct Mim1dOptions {
+  double strip_width_m = 0.2e-3;          //!< 2b [m]
+  Mim1dUpdate update = Mim1dUpdate::Newton;
+  CurvatureOptions curvature;             //!< lateral-curvature treatment in Eq. 26
+  double tolerance = 1.0e-11;             //!< relative convergence tolerance (loads, force) [-]
+  int max_iterations = 300;               //!< inner iterations per approach
+  int max_outer_iterations = 60;          //!< iterations on delta for a prescribed load
+  //! Initial potential zone [y_min, y_max] [m] (Figure 7 experiments); default: the interpenetration zone.
+  std::optional<std::pair<double, double>> starting_zone_m;
+};
+
+//! Solver for one gap profile. Construction resamples the gap onto strips (allocates, may throw InputError);
+//! solves never throw and report a SolveStatus.
+class Mim1dSolver {
+ public:
+  Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options);
+
+  //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h).
+  [[nodiscard]] NormalSolution solve_for_approach(double approach_m);
+  //! Solve for a prescribed total normal force [N].
+  [[nodiscard]] NormalSolution solve_for_load(double normal_force_N);
+
+  [[nodiscard]] const StripGrid& grid() const noexcept { return grid_; }
+
+ private:
+  struct InnerResult {
+    SolveStatus status = SolveStatus::NumericalFailure;
+    int iterations = 0;
+    double residual = 0.0;
+  };
+  InnerResult solve_inner(double approach_m, bool warm_start);
+  void update_lengths();
+  void build_matrices(bool with_jacobian);
+  [[nodiscard]] double displacement_at(std::size_t strip) const;
+  void initialise_zone(double approach_m);
+  void admit_strip(std::size_t strip);
+  [[nodiscard]] NormalSolution make_solution(SolveStatus status, double approach_m) const;
+
+  StripGrid grid_;
+  double E_star_Pa_;
+  Mim1dOptions options_;
+  double b_;                        // strip half-width [m]
+  double kernel_scale_;             // 2 / (pi^2 E* b) [m/N]
+  std::vector<double> compliance_;  // c_i [m/Pa] (all strips)
+  std::vector<double> scratch_;
+  std::vector<double> load_;        // N_i [N] (all strips; 0 outside the active set)
+  std::vector<double> length_;      // a_i [m] (all strips)
+  std::vector<std::size_t> active_; // strips in contact, increasing
+  Eigen::MatrixXd influence_;       // G on the active set
+  Eigen::MatrixXd jacobian_;        // dR/dN on the active set
+  Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
+  bool factorisation_is_jacobian_ = false;
+  std::vector<double> column_h_, column_q_;
+  int total_iterations_ = 0;
+};
+
+}  // namespace ctab::gen
