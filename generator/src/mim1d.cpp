@@ -16,6 +16,8 @@ namespace ctab::gen {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// Relative step and residual below which strips outside the set are checked for interpenetration.
+constexpr double kAdmissionCheckLevel = 1.0e-3;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -38,7 +40,7 @@ Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOpt
   const std::size_t n = grid_.size();
   load_.assign(n, 0.0);
   length_.assign(n, 0.0);
-  compliance_.assign(n, 0.0);
+  compliance_.assign(n, StripHertz{});
   active_.reserve(n);
   column_h_.resize(n + 1);
   column_q_.resize(n + 1);
@@ -46,7 +48,7 @@ Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOpt
 }
 
 void Mim1dSolver::update_lengths() {
-  for (const std::size_t j : active_) length_[j] = std::sqrt(compliance_[j] * load_[j] / (kPi * b_));
+  for (const std::size_t j : active_) length_[j] = std::sqrt(compliance_[j].compliance_m_per_Pa * load_[j] / (kPi * b_));
 }
 
 void Mim1dSolver::build_matrices(bool with_jacobian) {
@@ -60,8 +62,14 @@ void Mim1dSolver::build_matrices(bool with_jacobian) {
     const double beta = b_ / length_[j];
     const std::size_t reach = std::max(j - first, last - j);
     // H_k = h((2k+1) b/a_j), Q_k = t h'(t) there; column entries are differences of neighbours.
-    for (std::size_t k = 0; k <= reach; ++k)
-      kernel.value_and_scaled_slope(static_cast<double>(2 * k + 1) * beta, column_h_[k], column_q_[k]);
+    const bool fast = StripKernel::in_table(beta) && StripKernel::in_table(static_cast<double>(2 * reach + 1) * beta);
+    for (std::size_t k = 0; k <= reach; ++k) {
+      const double t = static_cast<double>(2 * k + 1) * beta;
+      if (fast)
+        kernel.value_and_scaled_slope_in_table(t, column_h_[k], column_q_[k]);
+      else
+        kernel.value_and_scaled_slope(t, column_h_[k], column_q_[k]);
+    }
     for (Eigen::Index r = 0; r < n; ++r) {
       const std::size_t i = active_[static_cast<std::size_t>(r)];
       const std::size_t k = i > j ? i - j : j - i;
@@ -90,20 +98,27 @@ double Mim1dSolver::displacement_at(std::size_t strip) const {
 void Mim1dSolver::initialise_zone(double approach_m) {
   active_.clear();
   std::fill(load_.begin(), load_.end(), 0.0);
-  std::size_t deepest = 0;
+  refresh_compliances(approach_m);
+  const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  const double depth = approach_m - grid_.h_m[deepest];
   for (std::size_t i = 0; i < grid_.size(); ++i) {
-    if (grid_.h_m[i] < grid_.h_m[deepest]) deepest = i;
-    if (!(grid_.h_m[i] < approach_m)) continue;
+    if (!(grid_.h_m[i] < approach_m)) continue;  // potential zone = interpenetration zone
     if (options_.starting_zone_m &&
         (grid_.y_m[i] < options_.starting_zone_m->first || grid_.y_m[i] > options_.starting_zone_m->second))
       continue;
+    // ANALYN (Eqs. A5-A6) from the deepest point; strips it leaves out start unloaded but stay candidates
+    // (re-admitted when they interpenetrate after deformation).
+    const StripHertz& local = compliance_[i];
+    const double d = depth - local.depth_factor * (grid_.h_m[i] - grid_.h_m[deepest]);
+    if (!(d > 0.0)) continue;
+    const double length = std::sqrt(d / (local.length_factor * grid_.A_per_m[i]));
+    load_[i] = kPi * b_ * length * length / local.compliance_m_per_Pa;  // N = pi a b p0, p0 = a / c
     active_.push_back(i);
   }
-  if (active_.empty()) active_.push_back(deepest);
-  // Geometric first guess of the strip lengths: rigid half-length at the local interpenetration.
-  for (const std::size_t i : active_)
-    length_[i] = std::sqrt(std::max(approach_m - grid_.h_m[i], 1e-3 * (approach_m - grid_.h_m[deepest])) /
-                           (2.0 * grid_.A_per_m[i]));
+  if (active_.empty()) {
+    active_.push_back(deepest);
+    load_[deepest] = kPi * b_ * depth / (2.0 * grid_.A_per_m[deepest] * compliance_[deepest].compliance_m_per_Pa);
+  }
 }
 
 void Mim1dSolver::admit_strip(std::size_t strip) {
@@ -114,27 +129,29 @@ void Mim1dSolver::admit_strip(std::size_t strip) {
     if (position == active_.end() || strip - before < neighbour - strip) neighbour = before;
   }
   const double guess_length = 0.5 * length_[neighbour];
-  load_[strip] = kPi * b_ * guess_length * guess_length / compliance_[strip];
+  load_[strip] = kPi * b_ * guess_length * guess_length / compliance_[strip].compliance_m_per_Pa;
   active_.insert(position, strip);
 }
 
-Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double approach_m, bool warm_start) {
+void Mim1dSolver::refresh_compliances(double approach_m) {
+  // Pointwise compliances do not depend on the approach; smoothed ones do (their weights).
+  if (approach_m == compliance_approach_ ||
+      (options_.curvature.treatment == CurvatureTreatment::Pointwise && !std::isnan(compliance_approach_)))
+    return;
+  strip_compliances(grid_, E_star_Pa_, approach_m, options_.curvature, compliance_, scratch_);
+  compliance_approach_ = approach_m;
+}
+
+Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_start, const double* target_load_N) {
   InnerResult result;
   const std::size_t n_all = grid_.size();
   const double h_min = *std::min_element(grid_.h_m.begin(), grid_.h_m.end());
-  const double depth = approach_m - h_min;
-  if (!(depth > 0.0)) {
+  if (!(approach_m - h_min > 0.0)) {
     active_.clear();
     std::fill(load_.begin(), load_.end(), 0.0);
     result.status = SolveStatus::NoContact;
     return result;
   }
-  strip_compliances(grid_, E_star_Pa_, approach_m, options_.curvature, compliance_, scratch_);
-  for (std::size_t i = 0; i < n_all; ++i)
-    if (grid_.h_m[i] < approach_m && !(compliance_[i] > 0.0 && std::isfinite(compliance_[i]))) {
-      result.status = SolveStatus::InvalidInput;
-      return result;
-    }
   bool loads_known = warm_start && !active_.empty();
   if (loads_known) {  // strips that no longer interpenetrate cannot carry load
     std::erase_if(active_, [&](std::size_t i) {
@@ -144,80 +161,114 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double approach_m, bool warm_s
     });
     loads_known = !active_.empty();
   }
-  if (!loads_known) initialise_zone(approach_m);
+  if (!loads_known) {
+    initialise_zone(approach_m);
+    loads_known = true;
+  }
 
-  const double displacement_tolerance = options_.tolerance * depth;
   const bool newton = options_.update == Mim1dUpdate::Newton;
   double last_change = std::numeric_limits<double>::infinity();
-  Eigen::VectorXd rhs, residual, next;
+  bool set_checked = false;  // Eq. 4 checked since the active set last changed
+  Eigen::VectorXd rhs, residual, next, loads, ones, slope;
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     result.iterations = iteration;
-    if (active_.empty()) return result;  // NumericalFailure
+    if (active_.empty() || !(approach_m - h_min > 0.0)) return result;  // NumericalFailure
+    refresh_compliances(approach_m);
+    for (const std::size_t i : active_)
+      if (!(compliance_[i].compliance_m_per_Pa > 0.0 && std::isfinite(compliance_[i].compliance_m_per_Pa))) {
+        result.status = SolveStatus::InvalidInput;
+        return result;
+      }
+    const double depth = approach_m - h_min;
     if (loads_known) update_lengths();
     build_matrices(newton && loads_known);
     const auto n = static_cast<Eigen::Index>(active_.size());
     rhs.resize(n);
-    next.resize(n);
-    Eigen::VectorXd loads(n);
+    loads.resize(n);
+    ones.setOnes(n);
     for (Eigen::Index r = 0; r < n; ++r) {
       const std::size_t i = active_[static_cast<std::size_t>(r)];
       rhs(r) = approach_m - grid_.h_m[i];
       loads(r) = load_[i];
     }
+    const double force_mismatch = target_load_N ? loads.sum() - *target_load_N : 0.0;
     if (loads_known) {
       residual = influence_ * loads - rhs;
       result.residual = residual.cwiseAbs().maxCoeff() / depth;
       if (!std::isfinite(result.residual)) return result;
-      if (last_change <= options_.tolerance && result.residual <= options_.tolerance) {
-        // Converged on this set: re-admit strips that interpenetrate after deformation (Eq. 4).
+      const bool force_converged = !target_load_N || std::abs(force_mismatch) <= options_.tolerance * *target_load_N;
+      // Newton converges quadratically: once the residual is at tolerance a step below sqrt(tol) is final.
+      const double change_tolerance = newton ? std::sqrt(options_.tolerance) : options_.tolerance;
+      const bool converged_on_set =
+          last_change <= change_tolerance && result.residual <= options_.tolerance && force_converged;
+      // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
+      // and again at convergence.
+      const bool roughly_converged = last_change <= kAdmissionCheckLevel && result.residual <= kAdmissionCheckLevel;
+      if (converged_on_set || (roughly_converged && !set_checked)) {
+        set_checked = true;
         bool admitted = false;
         for (std::size_t i = 0; i < n_all; ++i) {
           if (!(grid_.h_m[i] < approach_m) || load_[i] > 0.0) continue;
-          if (grid_.h_m[i] + displacement_at(i) - approach_m < -displacement_tolerance) {
+          if (grid_.h_m[i] + displacement_at(i) - approach_m < -options_.tolerance * depth) {
             admit_strip(i);
             admitted = true;
           }
         }
-        if (!admitted) {
+        if (admitted) {
+          set_checked = false;
+          last_change = std::numeric_limits<double>::infinity();
+          continue;
+        }
+        if (converged_on_set) {
           result.status = SolveStatus::Converged;
           return result;
         }
-        last_change = std::numeric_limits<double>::infinity();
-        continue;
       }
     }
+    double next_approach = approach_m;
     bool fixed_point_step = !(newton && loads_known);
     if (!fixed_point_step) {
       factorisation_.compute(jacobian_);
-      next = loads - factorisation_.solve(residual);
       factorisation_is_jacobian_ = true;
+      next = loads - factorisation_.solve(residual);
+      if (target_load_N) {  // bordered system: J dN - d(delta) 1 = -R,  1^T dN = -F
+        slope = factorisation_.solve(ones);
+        const double d_approach = (-force_mismatch - (next - loads).sum()) / slope.sum();
+        next += d_approach * slope;
+        next_approach = approach_m + d_approach;
+      }
       if ((next.array() <= 0.0).any()) fixed_point_step = true;  // Newton overshoots at a patch edge
     }
     if (fixed_point_step) {
       factorisation_.compute(influence_);
-      next = factorisation_.solve(rhs);
       factorisation_is_jacobian_ = false;
+      if (target_load_N) {  // G N - delta 1 = -h,  1^T N = target
+        next = factorisation_.solve(rhs - approach_m * ones);  // G^-1 (-h)
+        slope = factorisation_.solve(ones);
+        next_approach = (*target_load_N - next.sum()) / slope.sum();
+        next += next_approach * slope;
+      } else {
+        next = factorisation_.solve(rhs);
+      }
     }
-    if (!next.allFinite()) return result;
+    if (!next.allFinite() || !std::isfinite(next_approach)) return result;
     const double largest = next.maxCoeff();
     if (!(largest > 0.0)) return result;
+    approach_m = next_approach;
     // Strips with non-positive load leave the contact (paper Figure 3).
     bool removed = false;
-    for (Eigen::Index r = 0; r < n; ++r)
-      if (next(r) <= 0.0) {
-        load_[active_[static_cast<std::size_t>(r)]] = 0.0;
-        removed = true;
-      }
-    if (removed) {
-      for (Eigen::Index r = 0; r < n; ++r)
-        if (next(r) > 0.0) load_[active_[static_cast<std::size_t>(r)]] = next(r);
-      std::erase_if(active_, [&](std::size_t i) { return load_[i] <= 0.0; });
-      loads_known = true;
-      last_change = std::numeric_limits<double>::infinity();
-      continue;
+    for (Eigen::Index r = 0; r < n; ++r) {
+      const std::size_t i = active_[static_cast<std::size_t>(r)];
+      load_[i] = std::max(next(r), 0.0);
+      removed = removed || next(r) <= 0.0;
     }
-    last_change = loads_known ? (next - loads).cwiseAbs().maxCoeff() / largest : std::numeric_limits<double>::infinity();
-    for (Eigen::Index r = 0; r < n; ++r) load_[active_[static_cast<std::size_t>(r)]] = next(r);
+    if (removed) {
+      std::erase_if(active_, [&](std::size_t i) { return load_[i] <= 0.0; });
+      last_change = std::numeric_limits<double>::infinity();
+      set_checked = false;
+    } else {
+      last_change = loads_known ? (next - loads).cwiseAbs().maxCoeff() / largest : std::numeric_limits<double>::infinity();
+    }
     loads_known = true;
   }
   result.status = SolveStatus::MaxIterations;
@@ -268,7 +319,8 @@ NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
     invalid.patches.clear();
     return invalid;
   }
-  const InnerResult inner = solve_inner(approach_m, false);
+  double approach = approach_m;
+  const InnerResult inner = solve_inner(approach, false, nullptr);
   if (inner.status == SolveStatus::Converged) update_lengths();
   NormalSolution solution = make_solution(inner.status, approach_m);
   if (!is_success(inner.status)) solution.patches.clear(), solution.normal_load_N = 0.0;
@@ -280,13 +332,39 @@ NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
 
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   const auto start = std::chrono::steady_clock::now();
-  auto finish = [&](SolveStatus status, double approach, int iterations, int outer, double residual) {
+  int iterations = 0;
+  NormalSolution solution;
+  if (std::isfinite(normal_force_N) && normal_force_N > 0.0) {
+    // Combined iteration on loads and approach, from Hertz at the deepest point (the paper's start).
+    const auto deepest = static_cast<std::size_t>(
+        std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+    const double A0 = grid_.A_per_m[deepest];
+    const HertzContact hertz =
+        hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / 20.0), E_star_Pa_, normal_force_N);
+    double approach = grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : 1e-6);
+    const InnerResult inner = solve_inner(approach, false, &normal_force_N);
+    iterations = inner.iterations;
+    if (inner.status == SolveStatus::Converged) {
+      update_lengths();
+      solution = make_solution(inner.status, approach);
+      solution.iterations = iterations;
+      solution.outer_iterations = 1;
+      solution.residual = std::abs(solution.normal_load_N - normal_force_N) / normal_force_N;
+    }
+  }
+  if (solution.status != SolveStatus::Converged && solution.status != SolveStatus::ZoneTruncated)
+    solution = solve_for_load_nested(normal_force_N, iterations);
+  solution.solve_time_s = seconds_since(start);
+  return solution;
+}
+
+NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& iterations) {
+  auto finish = [&](SolveStatus status, double approach, int outer, double residual) {
     NormalSolution solution = make_solution(status, approach);
     if (!is_success(status)) solution.patches.clear(), solution.normal_load_N = 0.0;
     solution.iterations = iterations;
     solution.outer_iterations = outer;
     solution.residual = residual;
-    solution.solve_time_s = seconds_since(start);
     return solution;
   };
   const auto deepest = static_cast<std::size_t>(
@@ -294,23 +372,24 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   const double h_min = grid_.h_m[deepest];
   if (!(std::isfinite(normal_force_N) && normal_force_N >= 0.0)) {
     active_.clear();
-    return finish(SolveStatus::InvalidInput, h_min, 0, 0, 0.0);
+    return finish(SolveStatus::InvalidInput, h_min, 0, 0.0);
   }
   if (normal_force_N == 0.0) {
     active_.clear();
-    return finish(SolveStatus::NoContact, h_min, 0, 0, 0.0);
+    return finish(SolveStatus::NoContact, h_min, 0, 0.0);
   }
-  // Start from Hertz at the deepest point (paper: "the Hertzian rigid body approach").
   const double A0 = grid_.A_per_m[deepest];
-  const double B0 = std::max(grid_.B_per_m[deepest], A0 / 20.0);
-  const HertzContact hertz = hertz_from_load(A0, B0, E_star_Pa_, normal_force_N);
+  const HertzContact hertz = hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / 20.0), E_star_Pa_, normal_force_N);
   double approach = h_min + (hertz.status == SolveStatus::Converged ? hertz.approach_m : 1e-6);
   double lower = h_min, upper = std::numeric_limits<double>::infinity();
-  int iterations = 0;
   bool warm = false;
   Eigen::VectorXd ones, slope_vector;
+  auto eq16 = [&](double force) {  // paper Eq. 16, with delta measured from first contact
+    return h_min + (approach - h_min) * std::cbrt((normal_force_N / force) * (normal_force_N / force));
+  };
   for (int outer = 1; outer <= options_.max_outer_iterations; ++outer) {
-    const InnerResult inner = solve_inner(approach, warm);
+    double solved_approach = approach;
+    const InnerResult inner = solve_inner(solved_approach, warm, nullptr);
     iterations += inner.iterations;
     if (inner.status == SolveStatus::NoContact) {
       lower = approach;
@@ -318,24 +397,22 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
       warm = false;
       continue;
     }
-    if (inner.status != SolveStatus::Converged) return finish(inner.status, approach, iterations, outer, inner.residual);
+    if (inner.status != SolveStatus::Converged) return finish(inner.status, approach, outer, inner.residual);
     update_lengths();
     double force = 0.0;
     for (const std::size_t i : active_) force += load_[i];
     const double mismatch = force - normal_force_N;
     const double force_residual = std::abs(mismatch) / normal_force_N;
-    if (force_residual <= options_.tolerance) return finish(SolveStatus::Converged, approach, iterations, outer, force_residual);
+    if (force_residual <= options_.tolerance) return finish(SolveStatus::Converged, approach, outer, force_residual);
     (mismatch < 0.0 ? lower : upper) = approach;
     // Newton on delta with dN/d(delta) = 1^T J^-1 1 from the last factorisation.
     const auto n = static_cast<Eigen::Index>(active_.size());
     ones.setOnes(n);
     slope_vector = factorisation_.rows() == n ? Eigen::VectorXd(factorisation_.solve(ones)) : Eigen::VectorXd();
     const double slope = slope_vector.size() == n ? slope_vector.sum() : 0.0;
-    double next = (slope > 0.0 && std::isfinite(slope)) ? approach - mismatch / slope
-                                                        : h_min + (approach - h_min) * std::cbrt(std::pow(normal_force_N / force, 2.0));
+    double next = (slope > 0.0 && std::isfinite(slope)) ? approach - mismatch / slope : eq16(force);
     if (!(next > lower && next < upper)) {
-      next = std::isfinite(upper) ? 0.5 * (lower + upper)
-                                  : h_min + (approach - h_min) * std::cbrt(std::pow(normal_force_N / force, 2.0));  // Eq. 16
+      next = std::isfinite(upper) ? 0.5 * (lower + upper) : eq16(force);
       if (!(next > lower)) next = h_min + 2.0 * (approach - h_min);
     }
     if (slope_vector.size() == n) {  // warm start along dN/d(delta)
@@ -348,7 +425,7 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
     approach = next;
     warm = true;
   }
-  return finish(SolveStatus::MaxIterations, approach, iterations, options_.max_outer_iterations, 1.0);
+  return finish(SolveStatus::MaxIterations, approach, options_.max_outer_iterations, 1.0);
 }
 
 }  // namespace ctab::gen

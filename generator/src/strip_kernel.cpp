@@ -15,8 +15,9 @@ namespace {
 constexpr int kIntervalsPerOctave = 1 << StripKernel::kMantissaBits;
 constexpr int kOctaves = StripKernel::kMaxExponent - StripKernel::kMinExponent;
 constexpr std::size_t kIntervalCount = static_cast<std::size_t>(kOctaves) * kIntervalsPerOctave;
-const double kTableMin = std::ldexp(1.0, StripKernel::kMinExponent);
-const double kTableMax = std::ldexp(1.0, StripKernel::kMaxExponent);
+constexpr double kTableMin = StripKernel::kTableMin;
+constexpr double kTableMax = StripKernel::kTableMax;
+static_assert(kTableMin == 0x1p-40 && StripKernel::kMinExponent == -40 && StripKernel::kMaxExponent == 40);
 // lim_{t->inf} h(t) - (pi/4) asinh(t)  (integration by parts of h; see header).
 constexpr double kLargeArgumentConstant = std::numbers::pi / 8.0 + std::numbers::pi / 4.0 * std::numbers::ln2;
 
@@ -90,14 +91,9 @@ void StripKernel::value_and_scaled_slope(double t, double& h, double& t_dh) cons
     return;
   }
   // Index from the IEEE-754 bits: unbiased exponent and the leading kMantissaBits of the mantissa.
-  const auto bits = std::bit_cast<std::uint64_t>(x);
-  const auto exponent = static_cast<int>(bits >> 52) - 1023;
-  const auto step = static_cast<std::size_t>((bits >> (52 - kMantissaBits)) & (kIntervalsPerOctave - 1));
-  const std::size_t index = static_cast<std::size_t>(exponent - kMinExponent) * kIntervalsPerOctave + step;
-  const Interval& in = intervals_[index];
-  const double s = (x - in.t0) * in.inverse_width;
-  h = sign * (in.c0 + s * (in.c1 + s * (in.c2 + s * in.c3)));
-  t_dh = sign * x * (in.c1 + s * (2.0 * in.c2 + s * 3.0 * in.c3)) * in.inverse_width;
+  value_and_scaled_slope_in_table(x, h, t_dh);
+  h *= sign;
+  t_dh *= sign;
 }
 
 double StripKernel::value(double t) const noexcept {

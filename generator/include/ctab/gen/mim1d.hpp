@@ -8,18 +8,23 @@
 //!   sum_j G_ij(a_j) N_j = delta - h_i   for strips in contact (Eqs. 8-9, 13 and A2),
 //!   N_i = 0 and delta - h_i - u_i <= 0   elsewhere (Eq. 4),
 //! with G_ij = C_ij / (pi a_j b) from strip_kernel.hpp (closed form of Eqs. 10-12).
-//! Iteration (Figure 3): start from the interpenetration zone; solve; drop strips with non-positive load;
+//! Iteration (Figure 3): start from the interpenetration zone with the ANALYN estimate of every strip
+//! (Appendix 2: exact for an elliptic patch), a_i = sqrt(d_i / ((1 + alpha_i) A_i)), d_i = delta - (1 + beta_i) h_i,
+//! p0_i = a_i / c_i; solve; drop strips with non-positive load;
 //! update the lengths; re-admit strips that interpenetrate after deformation; repeat. Two update rules:
 //!   FixedPoint - the paper's: solve G(a) N = delta - h with the lengths of the previous iterate;
 //!   Newton     - (default) Newton's method on the same equations, the Jacobian including dG/da da/dN;
 //!                a step that would make a load non-positive falls back to the fixed-point step.
-//! Prescribed load (Eq. 6): a safeguarded Newton iteration on delta. The slope dN/d(delta) = 1^T J^-1 1 comes
-//! from the last factorisation (Eq. 16 is the fallback when no slope is available); the iterate is kept
-//! inside a bracket, bisecting when a step leaves it; the loads are warm-started along J^-1 1.
+//! Prescribed load (Eqs. 6 and 15): delta becomes one more unknown of the same Newton iteration (bordered
+//! system, two back-substitutions with one factorisation). Should that fail, the paper's outer iteration
+//! takes over: a safeguarded Newton iteration on delta with slope dN/d(delta) = 1^T J^-1 1 from the last
+//! factorisation (Eq. 16 when no slope is available), kept inside a bracket, bisecting when a step leaves
+//! it, the loads warm-started along J^-1 1.
 //! Validity: half-space (small contact angles across the patch), frictionless, quasi-identical materials;
 //! pressure symmetric in x (no yaw).
 #include <Eigen/Dense>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -65,7 +70,10 @@ class Mim1dSolver {
     int iterations = 0;
     double residual = 0.0;
   };
-  InnerResult solve_inner(double approach_m, bool warm_start);
+  //! Solves for the approach (in/out) or, with a target load, for both loads and approach.
+  InnerResult solve_inner(double& approach_m, bool warm_start, const double* target_load_N);
+  [[nodiscard]] NormalSolution solve_for_load_nested(double normal_force_N, int& iterations);
+  void refresh_compliances(double approach_m);
   void update_lengths();
   void build_matrices(bool with_jacobian);
   [[nodiscard]] double displacement_at(std::size_t strip) const;
@@ -78,7 +86,8 @@ class Mim1dSolver {
   Mim1dOptions options_;
   double b_;                        // strip half-width [m]
   double kernel_scale_;             // 2 / (pi^2 E* b) [m/N]
-  std::vector<double> compliance_;  // c_i [m/Pa] (all strips)
+  std::vector<StripHertz> compliance_;  // local Hertz data per strip (all strips)
+  double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for
   std::vector<double> scratch_;
   std::vector<double> load_;        // N_i [N] (all strips; 0 outside the active set)
   std::vector<double> length_;      // a_i [m] (all strips)

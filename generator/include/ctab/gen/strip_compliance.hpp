@@ -31,9 +31,16 @@ struct CurvatureOptions {
   double smoothing_fraction = 0.2;  //!< lambda: kernel width as a fraction of the contact half-width [-]
 };
 
-//! Fills compliance (size grid.size()) for the approach delta [m]: c_i [m/Pa] for every strip, 0 where the
-//! curvatures are invalid. E* [Pa]. Allocates only if `compliance` is too small.
+//! Local Hertz data of one strip, from (A_i, B_eff,i).
+struct StripHertz {
+  double compliance_m_per_Pa = 0.0;  //!< c_i = a_i / p0_i = pi m^2 n / (2 E* (A + B))  (Eq. 26) [m/Pa]
+  double length_factor = 0.0;        //!< 1 + alpha_i = r (1 + B/A)/m^2  (ANALYN, Eq. A7) [-]
+  double depth_factor = 0.0;         //!< 1 + beta_i  = r (1 + A/B)/n^2  (ANALYN, Eq. A8) [-]
+};
+
+//! Fills `hertz` (size grid.size()) for the approach delta [m]; zeros where the curvatures are invalid.
+//! E* [Pa]. Allocates only when the vectors are too small.
 void strip_compliances(const StripGrid& grid, double E_star_Pa, double approach_m, const CurvatureOptions& options,
-                       std::vector<double>& compliance, std::vector<double>& scratch);
+                       std::vector<StripHertz>& hertz, std::vector<double>& scratch);
 
 }  // namespace ctab::gen

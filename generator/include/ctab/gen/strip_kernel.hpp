@@ -12,6 +12,9 @@
 //! h is tabulated once per process on 2^-40 <= t < 2^40 (128 cubic-Hermite intervals per octave, values from
 //! exact h' by 4-point Gauss-Legendre); absolute error below 1e-10. A lookup is a few integer operations on
 //! the IEEE exponent and mantissa plus one cubic, no logarithm.
+#include <bit>
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace ctab::gen {
@@ -25,6 +28,18 @@ class StripKernel {
   [[nodiscard]] double value(double t) const noexcept;
   //! h(t) and t h'(t) at once (the latter enters the Newton Jacobian).
   void value_and_scaled_slope(double t, double& h, double& t_dh) const noexcept;
+  //! The same for 2^-40 <= t < 2^40 only (the matrix build's hot loop; no range or sign handling).
+  void value_and_scaled_slope_in_table(double t, double& h, double& t_dh) const noexcept {
+    const auto bits = std::bit_cast<std::uint64_t>(t);
+    const auto exponent = static_cast<int>(bits >> 52) - 1023;
+    const auto step = static_cast<std::size_t>((bits >> (52 - kMantissaBits)) & ((1u << kMantissaBits) - 1));
+    const Interval& in = intervals_[static_cast<std::size_t>(exponent - kMinExponent) * (1u << kMantissaBits) + step];
+    const double s = (t - in.t0) * in.inverse_width;
+    h = in.c0 + s * (in.c1 + s * (in.c2 + s * in.c3));
+    t_dh = t * (in.c1 + s * (2.0 * in.c2 + s * 3.0 * in.c3)) * in.inverse_width;
+  }
+  //! True when value_and_scaled_slope_in_table may be used for t.
+  [[nodiscard]] static bool in_table(double t) noexcept { return t >= kTableMin && t < kTableMax; }
 
   //! h'(t) evaluated exactly (Carlson), for tests and table construction.
   [[nodiscard]] static double exact_slope(double t) noexcept;
@@ -32,6 +47,8 @@ class StripKernel {
   static constexpr int kMinExponent = -40;
   static constexpr int kMaxExponent = 40;
   static constexpr int kMantissaBits = 7;
+  static constexpr double kTableMin = 0x1p-40;  //!< 2^kMinExponent
+  static constexpr double kTableMax = 0x1p+40;  //!< 2^kMaxExponent
 
  private:
   StripKernel();
