@@ -1,12 +1,16 @@
 #include "ctab/gen/error.hpp"
 
+#include <sstream>
+
 namespace ctab::gen {
 
 namespace {
 std::string format_input_error(const std::string& source, std::size_t line, const std::string& message) {
-  std::string text = source;
-  if (line > 0) text += ":" + std::to_string(line);
-  return text + ": " + message;
+  std::ostringstream text;
+  text << source;
+  if (line > 0) text << ':' << line;
+  text << ": " << message;
+  return text.str();
 }
 }  // namespace
 

@@ -1,0 +1,64 @@
+// `ctab bench solver`: MIM-1D on the Hertz case with prescribed load at three strip widths (paper Table 1).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+#include "commands.hpp"
+#include "ctab/gen/material.hpp"
+#include "ctab/gen/mim1d.hpp"
+#include "ctab/gen/paper_cases.hpp"
+
+namespace ctab::cli {
+
+namespace {
+
+struct Row {
+  double width_m;
+  double paper_matlab_s;  // Qazi et al. 2022, Table 1
+  double contact_s;       // CONTACT whole process, this machine kind (reference/contact/hertz_sphere.csv)
+};
+
+int run_bench_solver(double seconds_per_case) {
+  const double E_star = gen::effective_modulus(gen::kSteel, gen::kSteel);
+  const double force = 963.0e3;
+  const std::vector<Row> rows = {{0.2e-3, 2.0e-3, 0.033}, {0.08e-3, 2.9e-2, 0.205}, {0.04e-3, 9.2e-2, 0.99}};
+  std::printf("MIM-1D, sphere R = 40 mm on a flat, N = 963 kN prescribed (single thread)\n");
+  std::printf("%8s %7s %6s %11s %11s %11s %13s %11s %9s\n", "strip mm", "strips", "iters", "mean ms", "min ms",
+              "worst ms", "paper Matlab", "CONTACT", "speed-up");
+  const gen::GapProfile gap = gen::paper::hertz_sphere_gap();
+  for (const Row& row : rows) {
+    gen::Mim1dOptions options;
+    options.strip_width_m = row.width_m;
+    gen::Mim1dSolver solver(gap, E_star, options);
+    gen::NormalSolution solution = solver.solve_for_load(force);  // warm-up
+    std::vector<double> times;
+    double total = 0.0;
+    while (total < seconds_per_case || times.size() < 5) {
+      const auto start = std::chrono::steady_clock::now();
+      solution = solver.solve_for_load(force);
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      times.push_back(t);
+      total += t;
+    }
+    const double mean = total / static_cast<double>(times.size());
+    std::printf("%8.2f %7zu %6d %11.3f %11.3f %11.3f %11.1f ms %8.0f ms %8.0fx\n", row.width_m * 1e3,
+                solution.patches.empty() ? 0 : solution.patches.front().strips.size(), solution.iterations, mean * 1e3,
+                *std::min_element(times.begin(), times.end()) * 1e3, *std::max_element(times.begin(), times.end()) * 1e3,
+                row.paper_matlab_s * 1e3, row.contact_s * 1e3, row.contact_s / mean);
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand("bench", "Print speed figures (benchmarks, never timed tests)");
+  app->require_subcommand(1);
+  auto seconds = std::make_shared<double>(1.0);
+  CLI::App* solver = app->add_subcommand("solver", "MIM-1D on the Hertz case at strip widths 0.2, 0.08, 0.04 mm");
+  solver->add_option("--seconds", *seconds, "measuring time per width [s] (default 1)");
+  return {app, [seconds] { return run_bench_solver(*seconds); }};
+}
+
+}  // namespace ctab::cli

@@ -1,0 +1,18 @@
+#pragma once
+//! Subcommands of the `ctab` executable. Each registers its options on the app and runs when selected.
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace ctab::cli {
+
+//! A registered subcommand: `run` executes it and returns the process exit code.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+Command add_solve_command(CLI::App& parent);
+Command add_paper_cases_command(CLI::App& parent);
+Command add_bench_command(CLI::App& parent);
+
+}  // namespace ctab::cli
