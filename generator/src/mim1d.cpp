@@ -123,13 +123,15 @@ void Mim1dSolver::initialise_zone(double approach_m) {
 
 void Mim1dSolver::admit_strip(std::size_t strip) {
   const auto position = std::lower_bound(active_.begin(), active_.end(), strip);
+  if (position != active_.end() && *position == strip) return;
   std::size_t neighbour = position == active_.end() ? active_.back() : *position;
   if (position != active_.begin()) {
     const std::size_t before = *(position - 1);
     if (position == active_.end() || strip - before < neighbour - strip) neighbour = before;
   }
-  const double guess_length = 0.5 * length_[neighbour];
-  load_[strip] = kPi * b_ * guess_length * guess_length / compliance_[strip].compliance_m_per_Pa;
+  // Start at half the nearest loaded strip's length (at least a tenth of the strip width).
+  length_[strip] = std::max(0.5 * length_[neighbour], 0.1 * b_);
+  load_[strip] = kPi * b_ * length_[strip] * length_[strip] / compliance_[strip].compliance_m_per_Pa;
   active_.insert(position, strip);
 }
 
@@ -169,6 +171,7 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
   const bool newton = options_.update == Mim1dUpdate::Newton;
   double last_change = std::numeric_limits<double>::infinity();
   bool set_checked = false;  // Eq. 4 checked since the active set last changed
+  std::size_t growth = 0;     // admission reach, in strips
   Eigen::VectorXd rhs, residual, next, loads, ones, slope;
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     result.iterations = iteration;
@@ -206,15 +209,21 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
       const bool roughly_converged = last_change <= kAdmissionCheckLevel && result.residual <= kAdmissionCheckLevel;
       if (converged_on_set || (roughly_converged && !set_checked)) {
         set_checked = true;
-        bool admitted = false;
+        // A violator also brings its interpenetrating neighbours within a reach that doubles each round, so
+        // a contact far wider than the starting zone grows in O(log n) rounds (extra strips leave again
+        // through a non-positive load).
+        violators_.clear();
         for (std::size_t i = 0; i < n_all; ++i) {
           if (!(grid_.h_m[i] < approach_m) || load_[i] > 0.0) continue;
-          if (grid_.h_m[i] + displacement_at(i) - approach_m < -options_.tolerance * depth) {
-            admit_strip(i);
-            admitted = true;
-          }
+          if (grid_.h_m[i] + displacement_at(i) - approach_m < -options_.tolerance * depth) violators_.push_back(i);
         }
-        if (admitted) {
+        for (const std::size_t v : violators_) {
+          const std::size_t lo = v > growth ? v - growth : 0, hi = std::min(n_all - 1, v + growth);
+          for (std::size_t i = lo; i <= hi; ++i)
+            if (grid_.h_m[i] < approach_m && !(load_[i] > 0.0)) admit_strip(i);
+        }
+        if (!violators_.empty()) {
+          growth = 2 * growth + 1;
           set_checked = false;
           last_change = std::numeric_limits<double>::infinity();
           continue;

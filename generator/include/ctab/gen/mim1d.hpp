@@ -92,6 +92,7 @@ class Mim1dSolver {
   std::vector<double> load_;        // N_i [N] (all strips; 0 outside the active set)
   std::vector<double> length_;      // a_i [m] (all strips)
   std::vector<std::size_t> active_; // strips in contact, increasing
+  std::vector<std::size_t> violators_;  // strips that interpenetrate after deformation (scratch)
   Eigen::MatrixXd influence_;       // G on the active set
   Eigen::MatrixXd jacobian_;        // dR/dN on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
