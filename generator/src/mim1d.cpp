@@ -339,18 +339,20 @@ NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
   return solution;
 }
 
+double Mim1dSolver::hertz_start_approach(double normal_force_N) const {
+  const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  const double A0 = grid_.A_per_m[deepest];
+  const HertzContact hertz = hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / 20.0), E_star_Pa_, normal_force_N);
+  return grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : 1e-6);
+}
+
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   const auto start = std::chrono::steady_clock::now();
   int iterations = 0;
   NormalSolution solution;
   if (std::isfinite(normal_force_N) && normal_force_N > 0.0) {
     // Combined iteration on loads and approach, from Hertz at the deepest point (the paper's start).
-    const auto deepest = static_cast<std::size_t>(
-        std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
-    const double A0 = grid_.A_per_m[deepest];
-    const HertzContact hertz =
-        hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / 20.0), E_star_Pa_, normal_force_N);
-    double approach = grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : 1e-6);
+    double approach = hertz_start_approach(normal_force_N);
     const InnerResult inner = solve_inner(approach, false, &normal_force_N);
     iterations = inner.iterations;
     if (inner.status == SolveStatus::Converged) {
@@ -387,9 +389,7 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     active_.clear();
     return finish(SolveStatus::NoContact, h_min, 0, 0.0);
   }
-  const double A0 = grid_.A_per_m[deepest];
-  const HertzContact hertz = hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / 20.0), E_star_Pa_, normal_force_N);
-  double approach = h_min + (hertz.status == SolveStatus::Converged ? hertz.approach_m : 1e-6);
+  double approach = hertz_start_approach(normal_force_N);
   double lower = h_min, upper = std::numeric_limits<double>::infinity();
   bool warm = false;
   Eigen::VectorXd ones, slope_vector;

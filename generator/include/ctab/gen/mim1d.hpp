@@ -74,6 +74,8 @@ class Mim1dSolver {
   InnerResult solve_inner(double& approach_m, bool warm_start, const double* target_load_N);
   [[nodiscard]] NormalSolution solve_for_load_nested(double normal_force_N, int& iterations);
   void refresh_compliances(double approach_m);
+  //! Approach of Hertz at the deepest strip for the given load (the paper's starting value) [m].
+  [[nodiscard]] double hertz_start_approach(double normal_force_N) const;
   void update_lengths();
   void build_matrices(bool with_jacobian);
   [[nodiscard]] double displacement_at(std::size_t strip) const;
