@@ -39,6 +39,7 @@ std::vector<std::string_view> split_fields(std::string_view line) {
 
 std::optional<double> parse_number(std::string_view text) {
   double value = 0.0;
+  if (text.size() > 1 && text.front() == '+') text.remove_prefix(1);  // from_chars rejects a leading '+'
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec != std::errc() || ptr != end || text.empty()) return std::nullopt;
