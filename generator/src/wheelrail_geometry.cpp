@@ -1,0 +1,129 @@
+#include "ctab/gen/wheelrail_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ctab/gen/error.hpp"
+#include "ctab/gen/root_finding.hpp"
+
+namespace ctab::gen {
+
+SideGeometry::SideGeometry(const ProfileTable& wheel, const ProfileTable& rail, const TrackSetup& track)
+    : wheel_(&wheel), rail_(&rail), track_(track) {
+  double gauge_point = 0.0;
+  if (!rail.first_y_at_depth(track.gauge_height_m, gauge_point))
+    throw InputError(rail.name(), 0, "rail profile does not reach the gauge height " +
+                                         std::to_string(track.gauge_height_m * 1e3) + " mm below its top");
+  rail_origin_y_ = 0.5 * track.gauge_m - gauge_point;
+  wheel_origin_y_ = 0.5 * track.flange_back_distance_m - track.flange_back_position_m;
+}
+
+WheelSurfacePoint SideGeometry::wheel_point(double s_m, double dy_m, double roll_rad) const noexcept {
+  const ProfilePoint f = wheel_->at(s_m);
+  const double c = std::cos(roll_rad), sn = std::sin(roll_rad);
+  const double yl = wheel_origin_y_ + s_m, zl = track_.nominal_radius_m + f.z;
+  WheelSurfacePoint p;
+  p.rail_y_m = dy_m + yl * c - zl * sn - rail_origin_y_;
+  p.z_m = yl * sn + zl * c;
+  const double dy_ds = c - f.dz * sn, dz_ds = sn + f.dz * c;
+  p.slope = dz_ds / dy_ds;
+  p.curvature = f.curvature();  // invariant under the rigid motion
+  p.radius_m = zl;
+  return p;
+}
+
+double SideGeometry::gap(double s_m, double dy_m, double roll_rad) const noexcept {
+  const WheelSurfacePoint w = wheel_point(s_m, dy_m, roll_rad);
+  return rail_->at(w.rail_y_m).z - w.z_m;
+}
+
+void SideGeometry::overlap(double dy_m, double roll_rad, double& s_begin, double& s_end) const noexcept {
+  // y_rail(S) is increasing in S; clip the wheel range to the rail table by bisection.
+  auto inside_from = [&](double lo, double hi, bool lower_end) {
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const double y = wheel_point(mid, dy_m, roll_rad).rail_y_m;
+      const bool inside = lower_end ? y >= rail_->y_min() : y <= rail_->y_max();
+      (inside == lower_end ? hi : lo) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  s_begin = wheel_->y_min();
+  s_end = wheel_->y_max();
+  if (wheel_point(s_begin, dy_m, roll_rad).rail_y_m < rail_->y_min()) s_begin = inside_from(s_begin, s_end, true);
+  if (wheel_point(s_end, dy_m, roll_rad).rail_y_m > rail_->y_max()) s_end = inside_from(s_begin, s_end, false);
+}
+
+void SideGeometry::gap_minima(double dy_m, double roll_rad, std::vector<GapMinimum>& minima, double& first_contact_z_m) const {
+  minima.clear();
+  double s_begin = 0, s_end = 0;
+  overlap(dy_m, roll_rad, s_begin, s_end);
+  const auto count = static_cast<std::size_t>((s_end - s_begin) / kScanStep_m) + 1;
+  const double step = (s_end - s_begin) / static_cast<double>(std::max<std::size_t>(count - 1, 1));
+  double previous2 = 0, previous = 0;
+  auto gap_at = [&](std::size_t k) { return gap(s_begin + step * static_cast<double>(k), dy_m, roll_rad); };
+  for (std::size_t k = 0; k < count; ++k) {
+    const double g = gap_at(k);
+    const bool interior_minimum = k >= 2 && previous < previous2 && previous <= g;
+    const bool end_minimum = (k == 1 && previous <= g) || (k + 1 == count && g < previous);
+    if (interior_minimum || end_minimum) {
+      const double centre = s_begin + step * static_cast<double>(interior_minimum || k == 1 ? k - 1 : k);
+      // Refine by golden-section search on [centre - step, centre + step] within the overlap.
+      double lo = std::max(s_begin, centre - step), hi = std::min(s_end, centre + step);
+      const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+      double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+      double f1 = gap(x1, dy_m, roll_rad), f2 = gap(x2, dy_m, roll_rad);
+      for (int i = 0; i < 48 && hi - lo > 1e-10; ++i) {
+        if (f1 < f2) {
+          hi = x2; x2 = x1; f2 = f1; x1 = hi - ratio * (hi - lo); f1 = gap(x1, dy_m, roll_rad);
+        } else {
+          lo = x1; x1 = x2; f1 = f2; x2 = lo + ratio * (hi - lo); f2 = gap(x2, dy_m, roll_rad);
+        }
+      }
+      const double s = 0.5 * (lo + hi);
+      const WheelSurfacePoint w = wheel_point(s, dy_m, roll_rad);
+      const ProfilePoint r = rail_->at(w.rail_y_m);
+      minima.push_back({s, w.rail_y_m, r.z - w.z_m, std::atan(r.dz), w.radius_m});
+    }
+    previous2 = previous;
+    previous = g;
+  }
+  if (minima.empty()) {
+    first_contact_z_m = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  std::sort(minima.begin(), minima.end(), [](const GapMinimum& a, const GapMinimum& b) { return a.gap_m < b.gap_m; });
+  first_contact_z_m = minima.front().gap_m;
+  for (GapMinimum& m : minima) m.gap_m -= first_contact_z_m;
+}
+
+WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& left, double dy_m) {
+  WheelsetPose pose;
+  pose.dy_m = dy_m;
+  std::vector<GapMinimum> scratch;
+  auto heights = [&](double roll, double& z_right, double& z_left) {
+    right.gap_minima(dy_m, roll, scratch, z_right);
+    left.gap_minima(-dy_m, -roll, scratch, z_left);
+  };
+  // Both wheels touch when z_ws(right) = z_ws(left); the difference falls monotonically with the roll angle.
+  auto mismatch = [&](double roll) {
+    double zr = 0, zl = 0;
+    heights(roll, zr, zl);
+    return zr - zl;
+  };
+  double lo = -0.02, hi = 0.02;
+  double f_lo = mismatch(lo), f_hi = mismatch(hi);
+  for (int widen = 0; widen < 4 && (f_lo > 0.0) == (f_hi > 0.0); ++widen) {
+    lo *= 2.0;
+    hi *= 2.0;
+    f_lo = mismatch(lo);
+    f_hi = mismatch(hi);
+  }
+  const RootResult root = find_root_bracketed(mismatch, lo, f_lo, hi, f_hi, 1e-13, 1e-12, 100);
+  pose.converged = root.converged;
+  pose.roll_rad = root.x;
+  heights(pose.roll_rad, pose.z_right_m, pose.z_left_m);
+  return pose;
+}
+
+}  // namespace ctab::gen
