@@ -1,6 +1,8 @@
 #include "ctab/gen/hertz.hpp"
 
+#include <array>
 #include <cmath>
+#include <vector>
 #include <numbers>
 
 #include "ctab/gen/elliptic.hpp"
@@ -53,6 +55,58 @@ bool hertz_coefficients(double A_per_m, double B_per_m, HertzCoefficients& out) 
     out.n = large;
   }
   return true;
+}
+
+namespace {
+
+// m, n, r against x = ln(B/A), with slopes by central differences of the exact solution (h = 1e-4).
+class CoefficientTable {
+ public:
+  static constexpr double kHalfRange = 12.0, kNodesPerUnit = 100.0;
+  CoefficientTable() {
+    const auto count = static_cast<std::size_t>(2 * kHalfRange * kNodesPerUnit) + 1;
+    values_.resize(count);
+    slopes_.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      const double x = -kHalfRange + static_cast<double>(k) / kNodesPerUnit;
+      values_[k] = at(x);
+      const auto plus = at(x + 1e-4), minus = at(x - 1e-4);
+      for (std::size_t c = 0; c < 3; ++c) slopes_[k][c] = (plus[c] - minus[c]) / 2e-4;
+    }
+  }
+  bool lookup(double x, HertzCoefficients& out) const {
+    if (!(std::abs(x) < kHalfRange)) return false;
+    const double u = (x + kHalfRange) * kNodesPerUnit;
+    const auto k = std::min(static_cast<std::size_t>(u), values_.size() - 2);
+    const double t = u - static_cast<double>(k), h = 1.0 / kNodesPerUnit;
+    const double t2 = t * t, t3 = t2 * t;
+    std::array<double, 3> v{};
+    for (std::size_t c = 0; c < 3; ++c)
+      v[c] = (2 * t3 - 3 * t2 + 1) * values_[k][c] + (t3 - 2 * t2 + t) * h * slopes_[k][c] +
+             (-2 * t3 + 3 * t2) * values_[k + 1][c] + (t3 - t2) * h * slopes_[k + 1][c];
+    out = {v[0], v[1], v[2]};
+    return true;
+  }
+
+ private:
+  static std::array<double, 3> at(double x) {
+    HertzCoefficients c;
+    (void)hertz_coefficients(1.0, std::exp(x), c);
+    return {c.m, c.n, c.r};
+  }
+  std::vector<std::array<double, 3>> values_, slopes_;
+};
+
+}  // namespace
+
+bool hertz_coefficients_tabulated(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept {
+  if (!(std::isfinite(A_per_m) && std::isfinite(B_per_m) && A_per_m > 0.0 && B_per_m > 0.0)) {
+    out = HertzCoefficients{};
+    return false;
+  }
+  static const CoefficientTable table;
+  if (table.lookup(std::log(B_per_m / A_per_m), out)) return true;
+  return hertz_coefficients(A_per_m, B_per_m, out);
 }
 
 HertzContact hertz_from_load(double A_per_m, double B_per_m, double E_star_Pa, double normal_force_N) noexcept {

@@ -23,7 +23,10 @@ CurvePoint TransformedCurve::at(double t) const {
   return q;
 }
 
-double ProfilePoint::curvature() const { return d2z / std::pow(1.0 + dz * dz, 1.5); }
+double ProfilePoint::curvature() const {
+  const double g = 1.0 + dz * dz;
+  return d2z / (g * std::sqrt(g));
+}
 
 ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string name) : name_(std::move(name)), step_(step_m) {
   const double t0 = curve.t_begin(), t1 = curve.t_end();

@@ -25,7 +25,7 @@ class ComplianceCache {
       last_B_ = B;
       HertzCoefficients c;
       last_value_ = {};
-      if (hertz_coefficients(A, B, c)) {
+      if (hertz_coefficients_tabulated(A, B, c)) {
         last_value_.compliance_m_per_Pa = std::numbers::pi * c.m * c.m * c.n / (2.0 * E_star_ * (A + B));
         last_value_.length_factor = c.r * (1.0 + B / A) / (c.m * c.m);
         last_value_.depth_factor = c.r * (1.0 + A / B) / (c.n * c.n);
