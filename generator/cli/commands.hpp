@@ -14,5 +14,6 @@ struct Command {
 Command add_solve_command(CLI::App& parent);
 Command add_paper_cases_command(CLI::App& parent);
 Command add_bench_command(CLI::App& parent);
+Command add_geometry_command(CLI::App& parent);
 
 }  // namespace ctab::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<ctab::cli::Command> commands = {ctab::cli::add_solve_command(app),
                                                     ctab::cli::add_paper_cases_command(app),
+                                                    ctab::cli::add_geometry_command(app),
                                                     ctab::cli::add_bench_command(app)};
   try {
     app.parse(argc, argv);
