@@ -39,11 +39,11 @@ double equivalent_conicity(const std::vector<double>& dy_m, const std::vector<do
   std::vector<double> potential(n, 0.0);
   for (std::size_t i = 1; i < n; ++i)
     potential[i] = potential[i - 1] + 0.25 * (delta_r_m[i] + delta_r_m[i - 1]) * (dy_m[i] - dy_m[i - 1]);
-  auto V = [&](double u) {
+  auto V = [&](double u) {  // exact integral of the piecewise-linear dr/2
     const double step = dy_m[1] - dy_m[0];
     const auto k = std::min(static_cast<std::size_t>(u / step), n - 2);
     const double t = (u - dy_m[k]) / step;
-    return (1 - t) * potential[k] + t * potential[k + 1];
+    return potential[k] + 0.5 * step * (t * delta_r_m[k] + 0.5 * t * t * (delta_r_m[k + 1] - delta_r_m[k]));
   };
   const double top = V(amplitude_m);
   // Composite Gauss-Legendre (4 points on 64 panels) in theta on [0, pi/2].

@@ -1,0 +1,118 @@
+// MIM-1D on S1002/UIC60 (Manchester profiles, right wheel, single-wheel mode, N = 78.5 kN, steel, strips 0.2 mm)
+// against CONTACT (../shared/reference/contact/wheelrail): paper section 3.2, Figures 8-9.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ctab/gen/material.hpp"
+#include "ctab/gen/profile_io.hpp"
+#include "ctab/gen/wheelrail_contact.hpp"
+#include "test_support.hpp"
+
+using namespace ctab::gen;
+
+namespace {
+
+struct Case {
+  double dy_mm;
+  const char* tag;
+};
+
+class WheelRailContact : public ::testing::TestWithParam<Case> {
+ protected:
+  static void SetUpTestSuite() {
+    ProfileReadOptions o;
+    o.inclination = 0.0;
+    wheel_ = new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, o));
+    rail_ = new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_UIC60_v3.prr"), ProfileRole::Rail, o));
+    side_ = new SideGeometry(*wheel_, *rail_, TrackSetup{});
+  }
+  static void TearDownTestSuite() {
+    delete side_;
+    delete rail_;
+    delete wheel_;
+  }
+  static ProfileTable* wheel_;
+  static ProfileTable* rail_;
+  static SideGeometry* side_;
+};
+ProfileTable* WheelRailContact::wheel_ = nullptr;
+ProfileTable* WheelRailContact::rail_ = nullptr;
+SideGeometry* WheelRailContact::side_ = nullptr;
+
+// p0 along the patch: ours interpolated at CONTACT's rows (by rail y), RMS over max.
+double p0_rms(const WheelContact& c, const std::string& tag) {
+  const auto table = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/strips_" + tag + ".csv"));
+  const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
+  std::vector<std::pair<double, double>> ours;
+  for (const auto& patch : c.patches)
+    for (const auto& s : patch.strips) ours.emplace_back(s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
+  std::sort(ours.begin(), ours.end());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    double value = 0.0;
+    for (std::size_t k = 1; k < ours.size(); ++k)
+      if (y[i] >= ours[k - 1].first && y[i] <= ours[k].first && ours[k].first - ours[k - 1].first < 0.5) {
+        const double t = (y[i] - ours[k - 1].first) / (ours[k].first - ours[k - 1].first);
+        value = (1 - t) * ours[k - 1].second + t * ours[k].second;
+      }
+    sum += (value - p[i]) * (value - p[i]);
+  }
+  return std::sqrt(sum / static_cast<double>(y.size())) / *std::max_element(p.begin(), p.end());
+}
+
+}  // namespace
+
+TEST_P(WheelRailContact, MatchesContact) {
+  const Case c = GetParam();
+  const auto summary = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
+  const auto dys = summary.numbers("dy_mm");
+  const std::size_t row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
+  ASSERT_LT(row, dys.size());
+  const double ref_cop = summary.numbers("y_cop_rail_mm")[row], ref_angle = summary.numbers("contact_angle_rad")[row];
+  const double ref_area = summary.numbers("area_mm2")[row], ref_pmax = summary.numbers("pmax_MPa")[row];
+
+  const WheelContact contact = solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
+                                                   LoadKind::NormalForce, 78.5e3, WheelRailOptions{});
+  ASSERT_EQ(contact.status, SolveStatus::Converged);
+  ASSERT_FALSE(contact.patches.empty());
+  // Sums over the patches (at dy = 5 mm tread and flange root touch at once; CONTACT reports them merged).
+  double force = 0, area = 0, pmax = 0, cop = 0, angle = 0;
+  for (const auto& p : contact.patches) {
+    force += p.normal_force_N;
+    area += p.area_m2;
+    pmax = std::max(pmax, p.max_pressure_Pa);
+    cop += p.normal_force_N * p.y_cop_rail_m;
+    angle += p.normal_force_N * p.contact_angle_rad;
+  }
+  cop /= force;
+  angle /= force;
+  EXPECT_NEAR(force, 78.5e3, 1e-6 * 78.5e3);
+  EXPECT_NEAR(cop * 1e3, ref_cop, 0.3);
+  EXPECT_NEAR(area * 1e6 / ref_area - 1.0, 0.0, 0.02);
+  EXPECT_NEAR(pmax * 1e-6 / ref_pmax - 1.0, 0.0, 0.05);
+  EXPECT_LT(p0_rms(contact, c.tag), 0.05);
+  if (contact.patches.size() == 1) {
+    EXPECT_NEAR(angle * 180 / M_PI, ref_angle * 180 / M_PI, 0.2);
+  } else {
+    // Two patches in two planes (tread 7.3 deg, flange root 16.7 deg): their resultant points at 10.45 deg, while
+    // CONTACT's single merged plane gives 9.61 deg. Not comparable within 0.2 deg; recorded, see README.
+    EXPECT_NEAR(angle * 180 / M_PI, ref_angle * 180 / M_PI, 1.0);
+  }
+  std::ostringstream report;
+  report << std::fixed << std::setprecision(3) << "dy " << c.dy_mm << " mm: cop " << cop * 1e3 - ref_cop << " mm, angle "
+         << (angle - ref_angle) * 180 / M_PI << " deg, area " << 100 * (area * 1e6 / ref_area - 1) << " %, pmax "
+         << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %, p0 rms " << 100 * p0_rms(contact, c.tag) << " %";
+  RecordProperty("deviation", report.str());
+  std::cout << report.str() << '\n';
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactCases, WheelRailContact,
+                         ::testing::Values(Case{-1.0, "m1p00"}, Case{0.0, "p0p00"}, Case{1.0, "p1p00"}, Case{2.0, "p2p00"},
+                                           Case{5.0, "p5p00"}),
+                         [](const auto& info) { return std::string("dy_") + info.param.tag; });
