@@ -8,6 +8,8 @@
 #include "ctab/gen/material.hpp"
 #include "ctab/gen/mim1d.hpp"
 #include "ctab/gen/paper_cases.hpp"
+#include "ctab/gen/profile_io.hpp"
+#include "ctab/gen/wheelrail_contact.hpp"
 
 namespace ctab::cli {
 
@@ -50,6 +52,40 @@ int run_bench_solver(double seconds_per_case) {
   return 0;
 }
 
+// Geometry (rigid contact search, strip problem) plus MIM-1D per wheel-rail case: S1002 on UIC60 1:40, right wheel,
+// single-wheel mode, N = 78.5 kN, strips 0.2 mm, at the shifts of the CONTACT reference cases.
+int run_bench_wheelrail(double seconds_per_case) {
+  const double E_star = gen::effective_modulus(gen::kSteel, gen::kSteel);
+  const gen::ProfileTable wheel = gen::load_profile("S1002", gen::ProfileRole::Wheel, {});
+  const gen::ProfileTable rail = gen::load_profile("UIC60", gen::ProfileRole::Rail, {});
+  const gen::SideGeometry side(wheel, rail, gen::TrackSetup{});
+  struct Row {
+    double dy_m, contact_s;  // CONTACT whole-process CPU time per case, this machine kind (summary.csv cpu_s_case)
+  };
+  const std::vector<Row> rows = {{-1e-3, 0.146}, {0.0, 0.195}, {1e-3, 0.207}, {2e-3, 0.138}, {5e-3, 0.135}};
+  std::printf("Wheel-rail case: S1002 on UIC60 1:40, single wheel, N = 78.5 kN, strips 0.2 mm (single thread)\n");
+  std::printf("%8s %8s %7s %11s %11s %11s %10s %9s\n", "dy mm", "patches", "iters", "mean ms", "min ms", "worst ms", "CONTACT",
+              "speed-up");
+  for (const Row& row : rows) {
+    gen::WheelContact contact =
+        gen::solve_wheel_contact(side, row.dy_m, 0.0, E_star, gen::LoadKind::NormalForce, 78.5e3, gen::WheelRailOptions{});
+    std::vector<double> times;
+    double total = 0.0;
+    while (total < seconds_per_case || times.size() < 5) {
+      const auto start = std::chrono::steady_clock::now();
+      contact = gen::solve_wheel_contact(side, row.dy_m, 0.0, E_star, gen::LoadKind::NormalForce, 78.5e3, gen::WheelRailOptions{});
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      times.push_back(t);
+      total += t;
+    }
+    const double mean = total / static_cast<double>(times.size());
+    std::printf("%8.1f %8zu %7d %11.3f %11.3f %11.3f %7.0f ms %8.0fx\n", row.dy_m * 1e3, contact.patches.size(), contact.iterations,
+                mean * 1e3, *std::min_element(times.begin(), times.end()) * 1e3,
+                *std::max_element(times.begin(), times.end()) * 1e3, row.contact_s * 1e3, row.contact_s / mean);
+  }
+  return 0;
+}
+
 }  // namespace
 
 Command add_bench_command(CLI::App& parent) {
@@ -58,7 +94,9 @@ Command add_bench_command(CLI::App& parent) {
   auto seconds = std::make_shared<double>(1.0);
   CLI::App* solver = app->add_subcommand("solver", "MIM-1D on the Hertz case at strip widths 0.2, 0.08, 0.04 mm");
   solver->add_option("--seconds", *seconds, "measuring time per width [s] (default 1)");
-  return {app, [seconds] { return run_bench_solver(*seconds); }};
+  CLI::App* wheelrail = app->add_subcommand("wheelrail", "Geometry plus MIM-1D per wheel-rail case (the CONTACT cases)");
+  wheelrail->add_option("--seconds", *seconds, "measuring time per case [s] (default 1)");
+  return {app, [seconds, solver] { return solver->parsed() ? run_bench_solver(*seconds) : run_bench_wheelrail(*seconds); }};
 }
 
 }  // namespace ctab::cli

@@ -121,7 +121,7 @@ void Mim1dSolver::initialise_zone(double approach_m) {
   }
 }
 
-void Mim1dSolver::admit_strip(std::size_t strip) {
+void Mim1dSolver::admit_strip(std::size_t strip, double penetration_m) {
   const auto position = std::lower_bound(active_.begin(), active_.end(), strip);
   if (position != active_.end() && *position == strip) return;
   std::size_t neighbour = position == active_.end() ? active_.back() : *position;
@@ -129,9 +129,20 @@ void Mim1dSolver::admit_strip(std::size_t strip) {
     const std::size_t before = *(position - 1);
     if (position == active_.end() || strip - before < neighbour - strip) neighbour = before;
   }
-  // Start at half the nearest loaded strip's length (at least a tenth of the strip width).
-  length_[strip] = std::max(0.5 * length_[neighbour], 0.1 * b_);
-  load_[strip] = kPi * b_ * length_[strip] * length_[strip] / compliance_[strip].compliance_m_per_Pa;
+  // Start from the load whose own displacement closes the strip's penetration, G_ii(a(N)) N = penetration
+  // (a few Newton steps on the monotone self term), capped at the nearest loaded strip's load.
+  const double c = compliance_[strip].compliance_m_per_Pa;
+  const StripKernel& kernel = StripKernel::instance();
+  double load = std::max(load_[neighbour] * 0.25, 1e-12);
+  for (int i = 0; i < 8 && penetration_m > 0.0; ++i) {
+    const double a = std::sqrt(c * load / (kPi * b_));
+    double h = 0.0, t_dh = 0.0;
+    kernel.value_and_scaled_slope(b_ / a, h, t_dh);
+    const double u = kernel_scale_ * 2.0 * h * load, du = kernel_scale_ * 2.0 * (h - 0.5 * t_dh);
+    load = std::clamp(load - (u - penetration_m) / du, 0.05 * load, 4.0 * load);
+  }
+  load_[strip] = std::min(load, load_[neighbour]);
+  length_[strip] = std::sqrt(c * load_[strip] / (kPi * b_));
   active_.insert(position, strip);
 }
 
@@ -212,15 +223,34 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
         // A violator also brings its interpenetrating neighbours within a reach that doubles each round, so
         // a contact far wider than the starting zone grows in O(log n) rounds (extra strips leave again
         // through a non-positive load).
+        // Candidates: the unloaded interpenetrating strips next to the contact, and the deepest strip of every
+        // unloaded run of the interpenetration zone (where a separate contact would start).
         violators_.clear();
-        for (std::size_t i = 0; i < n_all; ++i) {
-          if (!(grid_.h_m[i] < approach_m) || load_[i] > 0.0) continue;
-          if (grid_.h_m[i] + displacement_at(i) - approach_m < -options_.tolerance * depth) violators_.push_back(i);
+        penetrations_.clear();
+        auto check = [&](std::size_t i) {
+          const double gap = grid_.h_m[i] + displacement_at(i) - approach_m;
+          if (gap < -options_.tolerance * depth) violators_.push_back(i), penetrations_.push_back(-gap);
+        };
+        for (std::size_t i = 0; i < n_all;) {
+          if (!(grid_.h_m[i] < approach_m) || load_[i] > 0.0) {
+            ++i;
+            continue;
+          }
+          std::size_t end = i, deepest = i;
+          while (end < n_all && grid_.h_m[end] < approach_m && !(load_[end] > 0.0)) {
+            if (grid_.h_m[end] < grid_.h_m[deepest]) deepest = end;
+            ++end;
+          }
+          if (i > 0 && load_[i - 1] > 0.0) check(i);
+          if (end < n_all && load_[end] > 0.0 && end - 1 != i) check(end - 1);
+          if (deepest != i && deepest != end - 1) check(deepest);
+          i = end;
         }
-        for (const std::size_t v : violators_) {
+        for (std::size_t k = 0; k < violators_.size(); ++k) {
+          const std::size_t v = violators_[k];
           const std::size_t lo = v > growth ? v - growth : 0, hi = std::min(n_all - 1, v + growth);
           for (std::size_t i = lo; i <= hi; ++i)
-            if (grid_.h_m[i] < approach_m && !(load_[i] > 0.0)) admit_strip(i);
+            if (grid_.h_m[i] < approach_m && !(load_[i] > 0.0)) admit_strip(i, i == v ? penetrations_[k] : 0.0);
         }
         if (!violators_.empty()) {
           growth = 2 * growth + 1;
@@ -320,7 +350,7 @@ NormalSolution Mim1dSolver::make_solution(SolveStatus status, double approach_m)
   return solution;
 }
 
-NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
+NormalSolution Mim1dSolver::solve_for_approach(double approach_m, bool warm_start) {
   const auto start = std::chrono::steady_clock::now();
   total_iterations_ = 0;
   if (!std::isfinite(approach_m)) {
@@ -329,7 +359,8 @@ NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
     return invalid;
   }
   double approach = approach_m;
-  const InnerResult inner = solve_inner(approach, false, nullptr);
+  const InnerResult inner = solve_inner(approach, warm_start && last_solve_succeeded_, nullptr);
+  last_solve_succeeded_ = inner.status == SolveStatus::Converged;
   if (inner.status == SolveStatus::Converged) update_lengths();
   NormalSolution solution = make_solution(inner.status, approach_m);
   if (!is_success(inner.status)) solution.patches.clear(), solution.normal_load_N = 0.0;
@@ -365,6 +396,7 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   }
   if (solution.status != SolveStatus::Converged && solution.status != SolveStatus::ZoneTruncated)
     solution = solve_for_load_nested(normal_force_N, iterations);
+  last_solve_succeeded_ = solution.status == SolveStatus::Converged;
   solution.solve_time_s = seconds_since(start);
   return solution;
 }

@@ -57,8 +57,9 @@ class Mim1dSolver {
  public:
   Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options);
 
-  //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h).
-  [[nodiscard]] NormalSolution solve_for_approach(double approach_m);
+  //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h). With warm_start the previous
+  //! solution of this solver (if it converged) is the start: for sequences of nearby approaches.
+  [[nodiscard]] NormalSolution solve_for_approach(double approach_m, bool warm_start = false);
   //! Solve for a prescribed total normal force [N].
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N);
 
@@ -80,7 +81,7 @@ class Mim1dSolver {
   void build_matrices(bool with_jacobian);
   [[nodiscard]] double displacement_at(std::size_t strip) const;
   void initialise_zone(double approach_m);
-  void admit_strip(std::size_t strip);
+  void admit_strip(std::size_t strip, double penetration_m);
   [[nodiscard]] NormalSolution make_solution(SolveStatus status, double approach_m) const;
 
   StripGrid grid_;
@@ -95,12 +96,14 @@ class Mim1dSolver {
   std::vector<double> length_;      // a_i [m] (all strips)
   std::vector<std::size_t> active_; // strips in contact, increasing
   std::vector<std::size_t> violators_;  // strips that interpenetrate after deformation (scratch)
+  std::vector<double> penetrations_;    // their penetration [m] (scratch)
   Eigen::MatrixXd influence_;       // G on the active set
   Eigen::MatrixXd jacobian_;        // dR/dN on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
   bool factorisation_is_jacobian_ = false;
   std::vector<double> column_h_, column_q_;
   int total_iterations_ = 0;
+  bool last_solve_succeeded_ = false;
 };
 
 }  // namespace ctab::gen
