@@ -253,15 +253,29 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
     if (!is_success(p.solution.status)) status = p.solution.status;
     for (const PatchSolution& ps : p.solution.patches) {
       ContactPatch out;
-      out.zone = p.reference.wheel_s_m > kFlangeRootS_m ? "tread" : "flange";
+      // Contact point of this run: its deepest rigid point (the reference minimum for the run that holds it).
+      std::size_t deepest = p.gap.size();
+      for (std::size_t i = 0; i < p.gap.size(); ++i)
+        if (p.gap.y_m[i] >= ps.y_min_m && p.gap.y_m[i] <= ps.y_max_m && (deepest == p.gap.size() || p.gap.h_m[i] < p.gap.h_m[deepest]))
+          deepest = i;
+      const bool holds_reference = ps.y_min_m <= 0.0 && ps.y_max_m >= 0.0;
+      GapMinimum point = p.reference;
+      if (!holds_reference && deepest < p.gap.size()) {
+        double s_guess = p.reference.wheel_s_m;
+        point.rail_y_m = p.rail_y[deepest];
+        (void)builder.wheel_at(point.rail_y_m, s_guess);
+        point.wheel_s_m = s_guess;
+        point.rolling_radius_m = side.track().nominal_radius_m + side.wheel().at(s_guess).z;
+      }
+      out.zone = point.wheel_s_m > kFlangeRootS_m ? "tread" : "flange";
       out.normal_force_N = ps.normal_force_N;
       out.area_m2 = ps.area_m2;
       out.max_pressure_Pa = ps.max_pressure_Pa;
       out.approach_m = p.solution.approach_m;
       out.plane_angle_rad = p.angle;
-      out.y_rail_m = p.reference.rail_y_m;
-      out.y_wheel_m = p.reference.wheel_s_m;
-      out.rolling_radius_m = p.reference.rolling_radius_m;
+      out.y_rail_m = point.rail_y_m;
+      out.y_wheel_m = point.wheel_s_m;
+      out.rolling_radius_m = point.rolling_radius_m;
       out.y_cop_rail_m = interpolate(p.gap.y_m, p.rail_y, ps.centre_of_pressure_y_m);
       out.s_min_m = ps.y_min_m;
       out.s_max_m = ps.y_max_m;
