@@ -162,6 +162,7 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
   side.gap_minima(dy_m, roll_rad, minima, z_first);
   if (minima.empty() || !std::isfinite(z_first)) return finish(SolveStatus::InvalidInput);
   result.first_contact_z_m = z_first + side.track().nominal_radius_m;
+  result.rigid_contact = minima[0];
   if (load_value == 0.0) {
     result.near_misses = minima;
     return finish(SolveStatus::NoContact);

@@ -66,6 +66,8 @@ class ProfileTable {
   [[nodiscard]] ProfilePoint at(double y) const noexcept;
   //! Lowest y at which z reaches `depth` (the gauge face for a rail measured from its top), if any.
   [[nodiscard]] bool first_y_at_depth(double depth_m, double& y_out) const noexcept;
+  //! The tabulated z values (provenance hashing).
+  [[nodiscard]] const std::vector<double>& z_samples() const noexcept { return z_; }
   //! Highest point (smallest z) of the profile: {y, z}.
   [[nodiscard]] std::pair<double, double> highest_point() const noexcept;
 

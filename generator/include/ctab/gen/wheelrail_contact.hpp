@@ -66,6 +66,7 @@ struct WheelContact {
   double roll_rad = 0.0;              //!< roll angle [rad]
   double vertical_approach_m = 0.0;   //!< wheel lowered beyond first contact [m]
   double first_contact_z_m = 0.0;     //!< z_ws of first contact, relative to the nominal r_nom [m]
+  GapMinimum rigid_contact;           //!< the rigid first-contact point (rolling radius for dr)
   double normal_force_N = 0.0;        //!< sum over patches
   double vertical_force_N = 0.0;      //!< sum of N_k cos(delta_k)
   int iterations = 0;                 //!< MIM-1D iterations, all patches and root-finding steps
