@@ -59,14 +59,14 @@ int run_bench_wheelrail(double seconds_per_case) {
   const gen::ProfileTable wheel = gen::load_profile("S1002", gen::ProfileRole::Wheel, {});
   const gen::ProfileTable rail = gen::load_profile("UIC60", gen::ProfileRole::Rail, {});
   const gen::SideGeometry side(wheel, rail, gen::TrackSetup{});
-  struct Row {
+  struct WheelRailRow {
     double dy_m, contact_s;  // CONTACT whole-process CPU time per case, this machine kind (summary.csv cpu_s_case)
   };
-  const std::vector<Row> rows = {{-1e-3, 0.146}, {0.0, 0.195}, {1e-3, 0.207}, {2e-3, 0.138}, {5e-3, 0.135}};
+  const std::vector<WheelRailRow> rows = {{-1e-3, 0.146}, {0.0, 0.195}, {1e-3, 0.207}, {2e-3, 0.138}, {5e-3, 0.135}};
   std::printf("Wheel-rail case: S1002 on UIC60 1:40, single wheel, N = 78.5 kN, strips 0.2 mm (single thread)\n");
   std::printf("%8s %8s %7s %11s %11s %11s %10s %9s\n", "dy mm", "patches", "iters", "mean ms", "min ms", "worst ms", "CONTACT",
               "speed-up");
-  for (const Row& row : rows) {
+  for (const WheelRailRow& row : rows) {
     gen::WheelContact contact =
         gen::solve_wheel_contact(side, row.dy_m, 0.0, E_star, gen::LoadKind::NormalForce, 78.5e3, gen::WheelRailOptions{});
     std::vector<double> times;

@@ -15,5 +15,7 @@ Command add_solve_command(CLI::App& parent);
 Command add_paper_cases_command(CLI::App& parent);
 Command add_bench_command(CLI::App& parent);
 Command add_geometry_command(CLI::App& parent);
+Command add_generate_command(CLI::App& parent);
+Command add_inspect_command(CLI::App& parent);
 
 }  // namespace ctab::cli

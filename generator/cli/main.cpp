@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
   CLI::App app{"ctab - wheel-rail contact tables: MIM-1D normal contact, table generation, real-time lookup"};
   app.set_version_flag("--version", std::string("ctab ") + CTAB_VERSION + " (" + CTAB_GIT_COMMIT + ")");
   app.require_subcommand(1);
-  const std::vector<ctab::cli::Command> commands = {ctab::cli::add_solve_command(app),
+  const std::vector<ctab::cli::Command> commands = {ctab::cli::add_generate_command(app),
+                                                    ctab::cli::add_inspect_command(app),
+                                                    ctab::cli::add_solve_command(app),
                                                     ctab::cli::add_paper_cases_command(app),
                                                     ctab::cli::add_geometry_command(app),
                                                     ctab::cli::add_bench_command(app)};
