@@ -20,13 +20,16 @@ build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
 run: build
-	$(BUILD_DIR)/bin/ctab paper-cases
+	$(BUILD_DIR)/bin/ctab generate -o $(BUILD_DIR)/default_table.h5
+	$(BUILD_DIR)/bin/ctab inspect $(BUILD_DIR)/default_table.h5 | tail -n 12
+	/usr/bin/python3 tables/scripts/plot_table.py $(BUILD_DIR)/default_table.h5 -o $(BUILD_DIR)/default_table.png
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 bench: build
 	$(BUILD_DIR)/bin/ctab bench solver
+	$(BUILD_DIR)/bin/ctab bench wheelrail
 	$(BUILD_DIR)/bin/ctab_solver_bench
 
 clean:
