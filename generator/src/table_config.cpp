@@ -1,6 +1,7 @@
 #include "ctab/gen/table_config.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -128,6 +129,13 @@ class Reader {
     const auto count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
     if (count > 1000000) fail(node, key, "more than 10^6 values");
     for (std::size_t i = 0; i < count; ++i) values.push_back(start + step * static_cast<double>(i));
+    // A range symmetric about zero is made exactly antisymmetric (values[n-1-i] = -values[i], 0 in the middle),
+    // so that mirroring one wheel onto the other is exact.
+    if (count > 1 && std::abs(start + values.back()) <= 1e-9 * step)
+      for (std::size_t i = 0; i < count / 2; ++i) {
+        values[count - 1 - i] = -values[i];
+        if (count % 2 == 1) values[count / 2] = 0.0;
+      }
     return values;
   }
 
@@ -263,7 +271,15 @@ TableConfig read_table_config(const std::string& path) {
   if (!in) throw InputError(path, 0, "cannot open config file");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_table_config(text.str(), path);
+  TableConfig config = parse_table_config(text.str(), path);
+  // Profile files given relative to the config file.
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  for (std::string* spec : {&config.wheel, &config.rail}) {
+    const std::string name = *spec;
+    const bool builtin = name == "S1002" || name == "s1002" || name == "UIC60" || name == "uic60" || name == "60E1" || name == "60e1";
+    if (!builtin && std::filesystem::path(name).is_relative()) *spec = (directory / name).lexically_normal().string();
+  }
+  return config;
 }
 
 }  // namespace ctab::gen

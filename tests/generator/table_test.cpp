@@ -1,0 +1,215 @@
+// The table generator and the HDF5 format: round trip, grid values against direct solves, determinism at 1 and 2
+// threads, malformed files rejected with clear errors, failed writes leave no table.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "ctab/gen/material.hpp"
+#include "ctab/gen/profile_io.hpp"
+#include "ctab/gen/table_generator.hpp"
+#include "ctab/tables/table.hpp"
+#include "test_support.hpp"
+
+using namespace ctab::gen;
+using ctab::tables::Table;
+using ctab::tables::TableStatus;
+
+namespace {
+
+const char* const kSmallConfig = R"(
+[solver]
+mode = "wheelset"
+[axes]
+lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 1e-3 }
+vertical_load_N = [50e3, 78.5e3]
+[output]
+strip_samples = 16
+)";
+
+const Table& small_table(int threads) {
+  static std::map<int, Table> tables;
+  auto found = tables.find(threads);
+  if (found == tables.end()) {
+    GeneratorInfo info;
+    info.threads = threads;
+    found = tables.emplace(threads, generate_table(parse_table_config(kSmallConfig, "small.toml"), info)).first;
+  }
+  return found->second;
+}
+
+std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
+
+template <class T>
+void expect_bitwise_equal(const std::vector<T>& a, const std::vector<T>& b, const char* what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(T)), 0) << what;
+}
+
+void expect_same_data(const Table& a, const Table& b) {
+  expect_bitwise_equal(a.lateral_displacement_m, b.lateral_displacement_m, "dy");
+  expect_bitwise_equal(a.second_axis, b.second_axis, "second axis");
+  expect_bitwise_equal(a.roll_rad, b.roll_rad, "roll");
+  expect_bitwise_equal(a.rolling_radius_difference_m, b.rolling_radius_difference_m, "dr");
+  expect_bitwise_equal(a.status, b.status, "status");
+  const auto& p = a.patch;
+  const auto& q = b.patch;
+  expect_bitwise_equal(p.present, q.present, "present");
+  expect_bitwise_equal(p.normal_force_N, q.normal_force_N, "normal force");
+  expect_bitwise_equal(p.area_m2, q.area_m2, "area");
+  expect_bitwise_equal(p.max_pressure_Pa, q.max_pressure_Pa, "pmax");
+  expect_bitwise_equal(p.contact_angle_rad, q.contact_angle_rad, "angle");
+  expect_bitwise_equal(p.y_cop_rail_m, q.y_cop_rail_m, "cop");
+  expect_bitwise_equal(p.semi_axis_a_m, q.semi_axis_a_m, "a");
+  expect_bitwise_equal(p.strip_half_length_m, q.strip_half_length_m, "strip a");
+  expect_bitwise_equal(p.strip_peak_pressure_Pa, q.strip_peak_pressure_Pa, "strip p0");
+}
+
+}  // namespace
+
+TEST(Table, RoundTrip) {
+  const Table& table = small_table(2);
+  ASSERT_EQ(table.n_dy(), 15u);
+  ASSERT_EQ(table.n_second(), 2u);
+  const std::string path = temp_path("round_trip.h5");
+  ASSERT_TRUE(ctab::tables::write_table(table, path).ok());
+  Table back;
+  const auto result = ctab::tables::read_table(path, back);
+  ASSERT_TRUE(result.ok()) << result.message;
+  expect_same_data(table, back);
+  EXPECT_EQ(back.text_attributes, table.text_attributes);
+  EXPECT_EQ(back.number_attributes, table.number_attributes);
+  EXPECT_EQ(back.second_axis_name, "vertical_load_N");
+  EXPECT_NE(back.text_attributes.at("config").find("vertical_load_N"), std::string::npos);
+  EXPECT_EQ(back.text_attributes.at("wheel_profile_sha256").size(), 64u);
+}
+
+TEST(Table, GridPointEqualsDirectSolve) {
+  const Table& table = small_table(2);
+  const ProfileTable wheel = load_profile("S1002", ProfileRole::Wheel, {});
+  const ProfileTable rail = load_profile("UIC60", ProfileRole::Rail, {});
+  const SideGeometry side(wheel, rail, TrackSetup{});
+  for (const std::size_t i_dy : {std::size_t{3}, std::size_t{9}, std::size_t{13}}) {
+    const double dy = table.lateral_displacement_m[i_dy];
+    const WheelsetPose pose = rigid_wheelset_pose(side, side, dy);
+    EXPECT_EQ(pose.roll_rad, table.roll_rad[i_dy * 2 + 1]);
+    // Right wheel, second load value; left wheel = right wheel at -dy.
+    const WheelContact right = solve_wheel_contact(side, dy, pose.roll_rad, effective_modulus(kSteel, kSteel),
+                                                   LoadKind::VerticalForce, 78.5e3, WheelRailOptions{});
+    const WheelContact left = solve_wheel_contact(side, -dy, -pose.roll_rad, effective_modulus(kSteel, kSteel),
+                                                  LoadKind::VerticalForce, 78.5e3, WheelRailOptions{});
+    for (const auto& [wheel_index, contact] : {std::pair<std::size_t, const WheelContact*>{0, &right}, {1, &left}}) {
+      double table_force = 0.0;
+      for (std::size_t slot = 0; slot < ctab::tables::kSlots; ++slot)
+        table_force += table.patch.normal_force_N[table.patch_index(i_dy, 1, wheel_index, slot)];
+      EXPECT_EQ(table_force == 0.0, contact->patches.empty());
+      EXPECT_NEAR(table_force, contact->normal_force_N, 1e-9 * contact->normal_force_N) << "dy " << dy;
+      EXPECT_EQ(table.status[(i_dy * 2 + 1) * 2 + wheel_index], static_cast<std::int8_t>(contact->status));
+      const ContactPatch& first = contact->patches.front();
+      const std::size_t slot = first.zone == "flange" ? 1 : 0;
+      const std::size_t k = table.patch_index(i_dy, 1, wheel_index, slot);
+      EXPECT_EQ(table.patch.present[k], 1);
+      // The right wheel is the same computation: bitwise equal. The left wheel is the mirrored right wheel at
+      // -dy; the direct solve at (-dy, -roll) agrees to rounding only (FMA contraction breaks exact antisymmetry).
+      const double tolerance = wheel_index == 0 ? 0.0 : 1e-9;
+      EXPECT_NEAR(table.patch.area_m2[k], first.area_m2, tolerance * first.area_m2) << "wheel " << wheel_index << " dy " << dy;
+      EXPECT_NEAR(table.patch.y_cop_rail_m[k], first.y_cop_rail_m, tolerance * 0.05) << "wheel " << wheel_index;
+      EXPECT_NEAR(table.patch.contact_angle_rad[k], first.contact_angle_rad, tolerance) << "wheel " << wheel_index;
+      EXPECT_NEAR(table.patch.max_pressure_Pa[k], first.max_pressure_Pa, tolerance * first.max_pressure_Pa);
+    }
+  }
+}
+
+TEST(Table, BitIdenticalForOneAndTwoThreads) {
+  const Table& one = small_table(1);
+  const Table& two = small_table(2);
+  expect_same_data(one, two);
+  // Files: identical bytes once the two attributes that must differ (threads, creation time) agree.
+  Table a = one, b = two;
+  a.number_attributes["threads"] = b.number_attributes["threads"] = 0;
+  a.text_attributes["created_utc"] = b.text_attributes["created_utc"] = "fixed";
+  const std::string pa = temp_path("one.h5"), pb = temp_path("two.h5");
+  ASSERT_TRUE(ctab::tables::write_table(a, pa).ok());
+  ASSERT_TRUE(ctab::tables::write_table(b, pb).ok());
+  std::ifstream fa(pa, std::ios::binary), fb(pb, std::ios::binary);
+  const std::string bytes_a((std::istreambuf_iterator<char>(fa)), {}), bytes_b((std::istreambuf_iterator<char>(fb)), {});
+  EXPECT_EQ(bytes_a.size(), bytes_b.size());
+  EXPECT_TRUE(bytes_a == bytes_b);
+}
+
+TEST(Table, MalformedFilesAreRejectedClearly) {
+  const std::string good = temp_path("good.h5");
+  ASSERT_TRUE(ctab::tables::write_table(small_table(2), good).ok());
+  Table t;
+  auto read = [&](const std::string& path) { return ctab::tables::read_table(path, t); };
+  EXPECT_EQ(read(temp_path("missing.h5")).status, TableStatus::CannotOpen);
+  {
+    std::ofstream(temp_path("text.h5")) << "not a table";
+    const auto r = read(temp_path("text.h5"));
+    EXPECT_EQ(r.status, TableStatus::NotATable);
+    EXPECT_NE(r.message.find("text.h5"), std::string::npos);
+  }
+  {  // truncated: the first half of a good file
+    std::ifstream in(good, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    std::ofstream(temp_path("truncated.h5"), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    EXPECT_NE(read(temp_path("truncated.h5")).status, TableStatus::Ok);
+  }
+  auto edited = [&](const char* name, const std::function<void(hid_t)>& edit) {
+    const std::string path = temp_path(name);
+    std::filesystem::copy_file(good, path, std::filesystem::copy_options::overwrite_existing);
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    edit(file);
+    H5Fclose(file);
+    return read(path);
+  };
+  {
+    const auto r = edited("version.h5", [](hid_t file) {
+      const hid_t attribute = H5Aopen(file, "schema_version", H5P_DEFAULT);
+      const double version = 99;
+      H5Awrite(attribute, H5T_NATIVE_DOUBLE, &version);
+      H5Aclose(attribute);
+    });
+    EXPECT_EQ(r.status, TableStatus::WrongSchemaVersion);
+    EXPECT_NE(r.message.find("schema version 99"), std::string::npos) << r.message;
+  }
+  {
+    const auto r = edited("missing_dataset.h5", [](hid_t file) { H5Ldelete(file, "/patches/area_m2", H5P_DEFAULT); });
+    EXPECT_EQ(r.status, TableStatus::MissingDataset);
+    EXPECT_NE(r.message.find("/patches/area_m2"), std::string::npos) << r.message;
+  }
+  {
+    const auto r = edited("wrong_shape.h5", [](hid_t file) {
+      H5Ldelete(file, "/cases/roll_rad", H5P_DEFAULT);
+      const hsize_t dims[1] = {7};
+      const hid_t space = H5Screate_simple(1, dims, nullptr);
+      const hid_t dataset = H5Dcreate2(file, "/cases/roll_rad", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dclose(dataset);
+      H5Sclose(space);
+    });
+    EXPECT_EQ(r.status, TableStatus::WrongShape);
+    EXPECT_NE(r.message.find("/cases/roll_rad"), std::string::npos) << r.message;
+  }
+}
+
+TEST(Table, FailedWriteLeavesNoTableAndKeepsTheOldOne) {
+  Table broken = small_table(2);
+  broken.patch.area_m2.pop_back();  // inconsistent: the writer fails half-way through
+  const std::string fresh = temp_path("fresh.h5");
+  std::filesystem::remove(fresh);
+  const auto r = ctab::tables::write_table(broken, fresh);
+  EXPECT_EQ(r.status, TableStatus::WriteFailed);
+  EXPECT_FALSE(std::filesystem::exists(fresh));
+  const std::string existing = temp_path("existing.h5");
+  ASSERT_TRUE(ctab::tables::write_table(small_table(2), existing).ok());
+  const auto size = std::filesystem::file_size(existing);
+  EXPECT_FALSE(ctab::tables::write_table(broken, existing).ok());
+  EXPECT_EQ(std::filesystem::file_size(existing), size);
+  Table back;
+  EXPECT_TRUE(ctab::tables::read_table(existing, back).ok());
+  for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir()))
+    EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << "temporary left: " << entry.path();
+}
