@@ -9,7 +9,9 @@
 #include "ctab/gen/mim1d.hpp"
 #include "ctab/gen/paper_cases.hpp"
 #include "ctab/gen/profile_io.hpp"
+#include "ctab/gen/table_generator.hpp"
 #include "ctab/gen/wheelrail_contact.hpp"
+#include <filesystem>
 
 namespace ctab::cli {
 
@@ -86,6 +88,35 @@ int run_bench_wheelrail(double seconds_per_case) {
   return 0;
 }
 
+// The default table (241 shifts x 2 wheels) at 1 and 2 threads: best of several runs of the generator, the
+// parallel efficiency t1 / (2 t2), and the size of the written file.
+int run_bench_generate(int repetitions) {
+  const gen::TableConfig config = gen::parse_table_config(gen::kDefaultTableConfig, "default config");
+  (void)gen::generate_table(config, gen::GeneratorInfo{});  // warm-up: process-wide tables
+  std::printf("Default table: %zu lateral shifts x 2 wheels, wheelset mode, MIM-1D 0.2 mm (best of %d runs)\n",
+              config.lateral_displacement_m.size(), repetitions);
+  double best[3] = {0, 1e9, 1e9};
+  tables::Table table;
+  for (int threads = 1; threads <= 2; ++threads) {
+    gen::GeneratorInfo info;
+    info.threads = threads;
+    for (int r = 0; r < repetitions; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      table = gen::generate_table(config, info);
+      best[threads] = std::min(best[threads], std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::printf("  %d thread(s): %.3f s\n", threads, best[threads]);
+  }
+  const std::string path = (std::filesystem::temp_directory_path() / "ctab_bench_table.h5").string();
+  const auto start = std::chrono::steady_clock::now();
+  if (!tables::write_table(table, path).ok()) return 4;
+  const double write = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("  parallel efficiency 1 -> 2 threads: %.0f %%\n", 100.0 * best[1] / (2.0 * best[2]));
+  std::printf("  HDF5 write %.3f s, file size %.1f kB\n", write, static_cast<double>(std::filesystem::file_size(path)) / 1024.0);
+  std::filesystem::remove(path);
+  return 0;
+}
+
 }  // namespace
 
 Command add_bench_command(CLI::App& parent) {
@@ -96,7 +127,14 @@ Command add_bench_command(CLI::App& parent) {
   solver->add_option("--seconds", *seconds, "measuring time per width [s] (default 1)");
   CLI::App* wheelrail = app->add_subcommand("wheelrail", "Geometry plus MIM-1D per wheel-rail case (the CONTACT cases)");
   wheelrail->add_option("--seconds", *seconds, "measuring time per case [s] (default 1)");
-  return {app, [seconds, solver] { return solver->parsed() ? run_bench_solver(*seconds) : run_bench_wheelrail(*seconds); }};
+  auto repetitions = std::make_shared<int>(5);
+  CLI::App* generate = app->add_subcommand("generate", "The default table at 1 and 2 threads: time, parallel efficiency, file size");
+  generate->add_option("--repetitions", *repetitions, "runs per thread count (default 5)");
+  return {app, [seconds, solver, wheelrail, repetitions] {
+            if (solver->parsed()) return run_bench_solver(*seconds);
+            if (wheelrail->parsed()) return run_bench_wheelrail(*seconds);
+            return run_bench_generate(*repetitions);
+          }};
 }
 
 }  // namespace ctab::cli

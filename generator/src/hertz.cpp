@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 #include <numbers>
 
@@ -19,29 +20,42 @@ double curvature_ratio(double mc) noexcept {
   return mc * ce.D / b_associate;
 }
 
-// Squared semi-axis ratio g^2 for a curvature ratio rho = A_small/B_large in (0, 1].
-double squared_axis_ratio(double rho) noexcept {
+// Squared semi-axis ratio g^2 for a curvature ratio rho = A_small/B_large in (0, 1]. `log_hint` (ln g^2 of a
+// nearby ratio, or NaN) narrows the starting bracket.
+double squared_axis_ratio(double rho, double log_hint = std::numeric_limits<double>::quiet_NaN()) noexcept {
   if (rho >= 1.0 - 1.0e-14) return 1.0;
   const double log_rho = std::log(rho);
   auto f = [log_rho](double s) { return std::log(curvature_ratio(std::exp(s))) - log_rho; };
-  // Greenwood (1985): a/b ~ (B/A)^(2/3), so log(g^2) ~ (4/3) log(rho); widen until bracketed.
-  double s_lo = 1.5 * (4.0 / 3.0) * log_rho - 0.5;
-  double f_lo = f(s_lo);
-  while (f_lo > 0.0 && s_lo > -700.0) {
-    s_lo *= 2.0;
+  // f decreases towards s -> -inf and is -log(rho) > 0 at s = 0.
+  double s_lo = 0.0, s_hi = 0.0, f_lo = 0.0, f_hi = f(0.0);
+  if (std::isfinite(log_hint)) {
+    s_hi = std::min(0.0, log_hint + 0.02);
+    f_hi = f(s_hi);
+    s_lo = log_hint - 0.02;
+    f_lo = f(s_lo);
+    if (f_hi < 0.0) {  // hint too low: fall back to the full bracket
+      s_hi = 0.0;
+      f_hi = f(0.0);
+    }
+  } else {
+    // Greenwood (1985): a/b ~ (B/A)^(2/3), so log(g^2) ~ (4/3) log(rho); widen until bracketed.
+    s_lo = 1.5 * (4.0 / 3.0) * log_rho - 0.5;
     f_lo = f(s_lo);
   }
-  const RootResult root = find_root_bracketed(f, s_lo, f_lo, 0.0, f(0.0), 1.0e-15, 1.0e-15, 200);
+  while (f_lo > 0.0 && s_lo > -700.0) {
+    s_lo = 2.0 * s_lo - 0.5;
+    f_lo = f(s_lo);
+  }
+  const RootResult root = find_root_bracketed(f, s_lo, f_lo, s_hi, f_hi, 1.0e-15, 1.0e-15, 200);
   return std::exp(root.x);
 }
 
-}  // namespace
-
-bool hertz_coefficients(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept {
+bool coefficients_from_ratio(double A_per_m, double B_per_m, double log_hint, HertzCoefficients& out, double* log_mc) {
   out = HertzCoefficients{};
   if (!(std::isfinite(A_per_m) && std::isfinite(B_per_m) && A_per_m > 0.0 && B_per_m > 0.0)) return false;
   const double rho = std::min(A_per_m, B_per_m) / std::max(A_per_m, B_per_m);
-  const double mc = squared_axis_ratio(rho);
+  const double mc = squared_axis_ratio(rho, log_hint);
+  if (log_mc) *log_mc = std::log(mc);
   const double g = std::sqrt(mc);
   const CompleteElliptic ce = complete_elliptic_from_complement(mc);
   const double small = std::cbrt(2.0 * g * ce.E / std::numbers::pi);  // coefficient of the shorter semi-axis
@@ -57,22 +71,43 @@ bool hertz_coefficients(double A_per_m, double B_per_m, HertzCoefficients& out) 
   return true;
 }
 
+}  // namespace
+
+bool hertz_coefficients(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept {
+  return coefficients_from_ratio(A_per_m, B_per_m, std::numeric_limits<double>::quiet_NaN(), out, nullptr);
+}
+
 namespace {
 
 // m, n, r against x = ln(B/A), with slopes by central differences of the exact solution (h = 1e-4).
 class CoefficientTable {
  public:
-  static constexpr double kHalfRange = 12.0, kNodesPerUnit = 100.0;
+  static constexpr double kHalfRange = 12.0, kNodesPerUnit = 64.0;
   CoefficientTable() {
     const auto count = static_cast<std::size_t>(2 * kHalfRange * kNodesPerUnit) + 1;
     values_.resize(count);
     slopes_.resize(count);
-    for (std::size_t k = 0; k < count; ++k) {
-      const double x = -kHalfRange + static_cast<double>(k) / kNodesPerUnit;
-      values_[k] = at(x);
-      const auto plus = at(x + 1e-4), minus = at(x - 1e-4);
-      for (std::size_t c = 0; c < 3; ++c) slopes_[k][c] = (plus[c] - minus[c]) / 2e-4;
+    // Nodes from the circle outwards (x = 0 is a circle), each inversion bracketed by its neighbour's solution.
+    const auto centre = static_cast<std::size_t>(kHalfRange * kNodesPerUnit);
+    for (const int direction : {+1, -1}) {
+      double hint = std::numeric_limits<double>::quiet_NaN();
+      for (std::size_t k = centre;; k += static_cast<std::size_t>(direction)) {
+        values_[k] = at(-kHalfRange + static_cast<double>(k) / kNodesPerUnit, hint);
+        if (k == 0 || k + 1 == count) break;
+      }
     }
+    // Slopes by the fourth-order 5-point stencil on the nodes (one-sided near the ends).
+    const double h = 1.0 / kNodesPerUnit;
+    for (std::size_t k = 0; k < count; ++k)
+      for (std::size_t c = 0; c < 3; ++c) {
+        auto v = [&](std::size_t i) { return values_[i][c]; };
+        if (k >= 2 && k + 2 < count)
+          slopes_[k][c] = (v(k - 2) - 8 * v(k - 1) + 8 * v(k + 1) - v(k + 2)) / (12 * h);
+        else if (k < 2)
+          slopes_[k][c] = (-25 * v(k) + 48 * v(k + 1) - 36 * v(k + 2) + 16 * v(k + 3) - 3 * v(k + 4)) / (12 * h);
+        else
+          slopes_[k][c] = (25 * v(k) - 48 * v(k - 1) + 36 * v(k - 2) - 16 * v(k - 3) + 3 * v(k - 4)) / (12 * h);
+      }
   }
   bool lookup(double x, HertzCoefficients& out) const {
     if (!(std::abs(x) < kHalfRange)) return false;
@@ -89,9 +124,9 @@ class CoefficientTable {
   }
 
  private:
-  static std::array<double, 3> at(double x) {
+  static std::array<double, 3> at(double x, double& log_hint) {
     HertzCoefficients c;
-    (void)hertz_coefficients(1.0, std::exp(x), c);
+    (void)coefficients_from_ratio(1.0, std::exp(x), log_hint, c, &log_hint);
     return {c.m, c.n, c.r};
   }
   std::vector<std::array<double, 3>> values_, slopes_;

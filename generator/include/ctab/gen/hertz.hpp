@@ -26,7 +26,7 @@ struct HertzCoefficients {
 [[nodiscard]] bool hertz_coefficients(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept;
 
 //! The same from a table in x = ln(B/A) built once per process (cubic Hermite, 64 nodes per unit of x on
-//! |x| <= 9.5, relative error < 1e-9), exact outside that range. For loops over many strips.
+//! |x| <= 12, relative error < 1e-10), exact outside that range. For loops over many strips.
 [[nodiscard]] bool hertz_coefficients_tabulated(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept;
 
 //! A full Hertz solution.
