@@ -67,6 +67,30 @@ TEST(Cli, HertzMethod) {
   EXPECT_NEAR(nlohmann::json::parse(run.output)["normal_load_N"].get<double>(), 963.74e3, 0.01e3);
 }
 
+TEST(Cli, GenerateAndInspect) {
+  const std::string config = write_temp("small.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
+                                        "lateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 1e-3 }\n");
+  const std::string table = ::testing::TempDir() + "small.h5";
+  const CtabRun generated = run_ctab("generate " + config + " -o " + table + " --threads 2");
+  ASSERT_EQ(generated.exit_code, 0) << generated.output;
+  EXPECT_NE(generated.output.find("5 lateral shifts x 1 vertical_load_N x 2 wheels"), std::string::npos) << generated.output;
+  const CtabRun inspected = run_ctab("inspect " + table);
+  ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
+  for (const char* text : {"schema version 1 (valid)", "git_commit", "wheel_profile_sha256", "lateral_displacement_m 5 values",
+                           "status counts (case x wheel): converged 10", "mode                   wheel"})
+    EXPECT_NE(inspected.output.find(text), std::string::npos) << text << "\n" << inspected.output;
+  // Bad inputs: clear one-line errors, non-zero exit, and the old table stays.
+  const CtabRun bad_config = run_ctab("generate " + write_temp("bad.toml", "[axes]\nlateral_displacement_m = 3\n") + " -o " + table);
+  EXPECT_NE(bad_config.exit_code, 0);
+  EXPECT_NE(bad_config.output.find("bad.toml:2: 'axes.lateral_displacement_m': expected {start, stop, step}"), std::string::npos)
+      << bad_config.output;
+  EXPECT_EQ(run_ctab("inspect " + table).exit_code, 0);
+  const CtabRun not_a_table = run_ctab("inspect " + config);
+  EXPECT_EQ(not_a_table.exit_code, 2);
+  EXPECT_NE(not_a_table.output.find("not an HDF5 contact table"), std::string::npos) << not_a_table.output;
+  EXPECT_NE(run_ctab("inspect /nonexistent.h5").output.find("/nonexistent.h5: cannot open table file"), std::string::npos);
+}
+
 TEST(Cli, BadInputGivesOneLineErrorAndNonZeroExit) {
   struct Case {
     std::string arguments, expected;
