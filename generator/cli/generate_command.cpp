@@ -9,15 +9,10 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "version.hpp"
 #include "ctab/gen/error.hpp"
 #include "ctab/gen/table_generator.hpp"
 
-#ifndef CTAB_VERSION
-#define CTAB_VERSION "unknown"
-#endif
-#ifndef CTAB_GIT_COMMIT
-#define CTAB_GIT_COMMIT "unknown"
-#endif
 
 namespace ctab::cli {
 

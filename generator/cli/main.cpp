@@ -5,14 +5,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "version.hpp"
 #include "ctab/gen/error.hpp"
 
-#ifndef CTAB_VERSION
-#define CTAB_VERSION "unknown"
-#endif
-#ifndef CTAB_GIT_COMMIT
-#define CTAB_GIT_COMMIT "unknown"
-#endif
 
 int main(int argc, char** argv) {
   CLI::App app{"ctab - wheel-rail contact tables: MIM-1D normal contact, table generation, real-time lookup"};

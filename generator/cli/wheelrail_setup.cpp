@@ -16,37 +16,13 @@ void add_wheelrail_options(CLI::App& app, WheelRailCliOptions& o) {
   app.add_option("--nominal-radius", o.track.nominal_radius_m, "nominal rolling radius [m] (default 0.460)");
 }
 
-double parse_inclination(const std::string& text) {
-  double value = 0.0;
-  try {
-    const auto slash = text.find('/');
-    std::size_t used = 0;
-    if (slash == std::string::npos) {
-      value = std::stod(text, &used);
-      if (used != text.size()) throw std::invalid_argument(text);
-    } else {
-      const double numerator = std::stod(text.substr(0, slash), &used);
-      if (used != slash) throw std::invalid_argument(text);
-      const std::string rest = text.substr(slash + 1);
-      const double denominator = std::stod(rest, &used);
-      if (used != rest.size() || denominator == 0.0) throw std::invalid_argument(text);
-      value = numerator / denominator;
-    }
-  } catch (const std::exception&) {
-    throw gen::InputError("--inclination", 0, "expected a ratio such as 1/40 or a number, got '" + text + "'");
-  }
-  if (!(std::isfinite(value) && value >= 0.0 && value < 0.2))
-    throw gen::InputError("--inclination", 0, "expected an inclination between 0 and 0.2, got '" + text + "'");
-  return value;
-}
-
 WheelRailSetup build_wheelrail_setup(const WheelRailCliOptions& o) {
   for (const double* v : {&o.track.gauge_m, &o.track.flange_back_distance_m, &o.track.nominal_radius_m})
     if (!(std::isfinite(*v) && *v > 0.0)) throw gen::InputError("track", 0, "gauge, flange-back distance and radius must be positive");
   if (!(std::isfinite(o.smoothing_m) && o.smoothing_m >= 0.0)) throw gen::InputError("--smoothing", 0, "expected a length >= 0 in metres");
   gen::ProfileReadOptions read;
   read.smoothing_length_m = o.smoothing_m;
-  read.inclination = parse_inclination(o.inclination);
+  read.inclination = gen::parse_inclination(o.inclination, "--inclination", 0, "");
   WheelRailSetup setup;
   setup.wheel = gen::load_profile(o.wheel, gen::ProfileRole::Wheel, read);
   setup.rail = gen::load_profile(o.rail, gen::ProfileRole::Rail, read);

@@ -24,8 +24,6 @@ struct WheelRailSetup {
 };
 
 void add_wheelrail_options(CLI::App& app, WheelRailCliOptions& options);
-//! Parses "1/40", "0.025" or "0"; throws InputError naming --inclination otherwise.
-[[nodiscard]] double parse_inclination(const std::string& text);
 [[nodiscard]] WheelRailSetup build_wheelrail_setup(const WheelRailCliOptions& options);
 
 }  // namespace ctab::cli

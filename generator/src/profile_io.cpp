@@ -258,6 +258,22 @@ ProfilePoints read_profile_points(const std::string& path, ProfileRole role, con
   return out;
 }
 
+double parse_inclination(const std::string& text, const std::string& source, std::size_t line, const std::string& what) {
+  double value = -1.0;
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) {
+    if (!parse_double(trim(text), value)) value = -1.0;
+  } else {
+    double numerator = 0.0, denominator = 0.0;
+    if (parse_double(trim(text.substr(0, slash)), numerator) && parse_double(trim(text.substr(slash + 1)), denominator) &&
+        denominator != 0.0)
+      value = numerator / denominator;
+  }
+  if (!(std::isfinite(value) && value >= 0.0 && value < 0.2))
+    throw InputError(source, line, (what.empty() ? "" : what + ": ") + "expected a ratio such as 1/40 or a number in [0, 0.2), got '" + text + "'");
+  return value;
+}
+
 ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options) {
   const std::string name = lower(spec);
   std::shared_ptr<const ProfileCurve> curve;

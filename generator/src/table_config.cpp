@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "ctab/gen/error.hpp"
+#include "ctab/gen/profile_io.hpp"
 
 namespace ctab::gen {
 
@@ -144,29 +145,6 @@ class Reader {
   std::string source_;
 };
 
-double parse_ratio(const std::string& text, const std::string& source, std::size_t line) {
-  try {
-    std::size_t used = 0;
-    const auto slash = text.find('/');
-    double value = 0.0;
-    if (slash == std::string::npos) {
-      value = std::stod(text, &used);
-      if (used != text.size()) throw std::invalid_argument(text);
-    } else {
-      const double numerator = std::stod(text.substr(0, slash), &used);
-      if (used != slash) throw std::invalid_argument(text);
-      const std::string rest = text.substr(slash + 1);
-      const double denominator = std::stod(rest, &used);
-      if (used != rest.size() || denominator == 0.0) throw std::invalid_argument(text);
-      value = numerator / denominator;
-    }
-    if (!(value >= 0.0 && value < 0.2)) throw std::invalid_argument(text);
-    return value;
-  } catch (const std::exception&) {
-    throw InputError(source, line, "'profiles.inclination': expected a ratio such as \"1/40\" or a number in [0, 0.2), got '" + text + "'");
-  }
-}
-
 }  // namespace
 
 std::size_t TableConfig::key_line(const std::string& key) const {
@@ -207,7 +185,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
   c.wheel = r.text("profiles", "wheel", c.wheel);
   c.rail = r.text("profiles", "rail", c.rail);
   c.inclination_text = r.text("profiles", "inclination", c.inclination_text);
-  c.inclination = parse_ratio(c.inclination_text, source, c.key_line("profiles.inclination"));
+  c.inclination = parse_inclination(c.inclination_text, source, c.key_line("profiles.inclination"), "'profiles.inclination'");
   c.smoothing_length_m = r.number("profiles", "smoothing_m", c.smoothing_length_m);
   c.track.gauge_m = r.number("track", "gauge_m", c.track.gauge_m);
   c.track.gauge_height_m = r.number("track", "gauge_height_m", c.track.gauge_height_m);

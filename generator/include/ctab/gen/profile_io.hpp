@@ -43,6 +43,10 @@ struct ProfilePoints {
 
 [[nodiscard]] ProfilePoints read_profile_points(const std::string& path, ProfileRole role, const ProfileReadOptions& options);
 
+//! Parses a rail inclination: a ratio such as "1/40" or a number in [0, 0.2). Throws InputError naming
+//! `source`, `line` and `what` (the option or key) otherwise.
+[[nodiscard]] double parse_inclination(const std::string& text, const std::string& source, std::size_t line, const std::string& what);
+
 //! A profile table from a built-in name (wheel: "S1002"; rail: "UIC60" or "60E1") or a file path.
 [[nodiscard]] ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options);
 
