@@ -99,23 +99,35 @@ void Mim1dSolver::initialise_zone(double approach_m) {
   active_.clear();
   std::fill(load_.begin(), load_.end(), 0.0);
   refresh_compliances(approach_m);
+  const std::size_t n = grid_.size();
   const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
-  const double depth = approach_m - grid_.h_m[deepest];
-  for (std::size_t i = 0; i < grid_.size(); ++i) {
+  // ANALYN is local: each strip is measured from the deepest point of its own basin of h (between neighbouring
+  // local maxima), so that every separate contact region starts loaded.
+  std::vector<double>& basin_minimum = basin_scratch_;
+  basin_minimum.assign(n, 0.0);
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = begin + 1;
+    while (end < n && !(end + 1 < n && grid_.h_m[end] > grid_.h_m[end - 1] && grid_.h_m[end] >= grid_.h_m[end + 1])) ++end;
+    const double low = *std::min_element(grid_.h_m.begin() + static_cast<std::ptrdiff_t>(begin), grid_.h_m.begin() + static_cast<std::ptrdiff_t>(end));
+    std::fill(basin_minimum.begin() + static_cast<std::ptrdiff_t>(begin), basin_minimum.begin() + static_cast<std::ptrdiff_t>(end), low);
+    begin = end;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
     if (!(grid_.h_m[i] < approach_m)) continue;  // potential zone = interpenetration zone
     if (options_.starting_zone_m &&
         (grid_.y_m[i] < options_.starting_zone_m->first || grid_.y_m[i] > options_.starting_zone_m->second))
       continue;
-    // ANALYN (Eqs. A5-A6) from the deepest point; strips it leaves out start unloaded but stay candidates
-    // (re-admitted when they interpenetrate after deformation).
+    // ANALYN (Eqs. A5-A6); strips it leaves out start unloaded but stay candidates (re-admitted when they
+    // interpenetrate after deformation).
     const StripHertz& local = compliance_[i];
-    const double d = depth - local.depth_factor * (grid_.h_m[i] - grid_.h_m[deepest]);
+    const double d = (approach_m - basin_minimum[i]) - local.depth_factor * (grid_.h_m[i] - basin_minimum[i]);
     if (!(d > 0.0)) continue;
     const double length = std::sqrt(d / (local.length_factor * grid_.A_per_m[i]));
     load_[i] = kPi * b_ * length * length / local.compliance_m_per_Pa;  // N = pi a b p0, p0 = a / c
     active_.push_back(i);
   }
   if (active_.empty()) {
+    const double depth = approach_m - grid_.h_m[deepest];
     active_.push_back(deepest);
     load_[deepest] = kPi * b_ * depth / (2.0 * grid_.A_per_m[deepest] * compliance_[deepest].compliance_m_per_Pa);
   }

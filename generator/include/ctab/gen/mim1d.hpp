@@ -8,7 +8,8 @@
 //!   sum_j G_ij(a_j) N_j = delta - h_i   for strips in contact (Eqs. 8-9, 13 and A2),
 //!   N_i = 0 and delta - h_i - u_i <= 0   elsewhere (Eq. 4),
 //! with G_ij = C_ij / (pi a_j b) from strip_kernel.hpp (closed form of Eqs. 10-12).
-//! Iteration (Figure 3): start from the interpenetration zone with the ANALYN estimate of every strip
+//! Iteration (Figure 3): start from the interpenetration zone with the ANALYN estimate of every strip, measured
+//! from the deepest point of its own basin of h
 //! (Appendix 2: exact for an elliptic patch), a_i = sqrt(d_i / ((1 + alpha_i) A_i)), d_i = delta - (1 + beta_i) h_i,
 //! p0_i = a_i / c_i; solve; drop strips with non-positive load;
 //! update the lengths; re-admit strips that interpenetrate after deformation; repeat. Two update rules:
@@ -97,6 +98,7 @@ class Mim1dSolver {
   std::vector<std::size_t> active_; // strips in contact, increasing
   std::vector<std::size_t> violators_;  // strips that interpenetrate after deformation (scratch)
   std::vector<double> penetrations_;    // their penetration [m] (scratch)
+  std::vector<double> basin_scratch_;   // deepest h of each strip's basin (initial guess)
   Eigen::MatrixXd influence_;       // G on the active set
   Eigen::MatrixXd jacobian_;        // dR/dN on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
