@@ -51,11 +51,13 @@ void Mim1dSolver::update_lengths() {
   for (const std::size_t j : active_) length_[j] = std::sqrt(compliance_[j].compliance_m_per_Pa * load_[j] / (kPi * b_));
 }
 
-void Mim1dSolver::build_matrices(bool with_jacobian) {
+void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
   const StripKernel& kernel = StripKernel::instance();
   const auto n = static_cast<Eigen::Index>(active_.size());
-  influence_.resize(n, n);
-  if (with_jacobian) jacobian_.resize(n, n);
+  const bool jacobian = kind == MatrixKind::Jacobian;
+  Eigen::MatrixXd& matrix = jacobian ? jacobian_ : influence_;
+  matrix.resize(n, n);
+  displacement_.setZero(n);
   const std::size_t first = active_.front(), last = active_.back();
   for (Eigen::Index c = 0; c < n; ++c) {
     const std::size_t j = active_[static_cast<std::size_t>(c)];
@@ -70,15 +72,20 @@ void Mim1dSolver::build_matrices(bool with_jacobian) {
       else
         kernel.value_and_scaled_slope(t, column_h_[k], column_q_[k]);
     }
+    const double load = with_displacement ? load_[j] : 0.0;
+    double* column = matrix.col(c).data();
+    double* u = displacement_.data();
     for (Eigen::Index r = 0; r < n; ++r) {
       const std::size_t i = active_[static_cast<std::size_t>(r)];
       const std::size_t k = i > j ? i - j : j - i;
-      const double dh = k == 0 ? 2.0 * column_h_[0] : column_h_[k] - column_h_[k - 1];
-      influence_(r, c) = kernel_scale_ * dh;
-      if (with_jacobian) {
+      const double g = kernel_scale_ * (k == 0 ? 2.0 * column_h_[0] : column_h_[k] - column_h_[k - 1]);
+      u[r] += g * load;  // u = G N, accumulated column by column
+      if (jacobian) {
         // d(G_ij N_j)/dN_j = G_ij + (a_j/2) dG_ij/da_j, with dh(c/a)/da = -t h'(t)/a.
         const double dq = k == 0 ? 2.0 * column_q_[0] : column_q_[k] - column_q_[k - 1];
-        jacobian_(r, c) = kernel_scale_ * (dh - 0.5 * dq);
+        column[r] = g - 0.5 * kernel_scale_ * dq;
+      } else {
+        column[r] = g;
       }
     }
   }
@@ -207,7 +214,7 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
       }
     const double depth = approach_m - h_min;
     if (loads_known) update_lengths();
-    build_matrices(newton && loads_known);
+    build_matrices(newton && loads_known ? MatrixKind::Jacobian : MatrixKind::Influence, loads_known);
     const auto n = static_cast<Eigen::Index>(active_.size());
     rhs.resize(n);
     loads.resize(n);
@@ -219,7 +226,7 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
     }
     const double force_mismatch = target_load_N ? loads.sum() - *target_load_N : 0.0;
     if (loads_known) {
-      residual = influence_ * loads - rhs;
+      residual = displacement_ - rhs;
       result.residual = residual.cwiseAbs().maxCoeff() / depth;
       if (!std::isfinite(result.residual)) return result;
       const bool force_converged = !target_load_N || std::abs(force_mismatch) <= options_.tolerance * *target_load_N;
@@ -291,6 +298,7 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
       if ((next.array() <= 0.0).any()) fixed_point_step = true;  // Newton overshoots at a patch edge
     }
     if (fixed_point_step) {
+      if (newton && loads_known) build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
       factorisation_.compute(influence_);
       factorisation_is_jacobian_ = false;
       if (target_load_N) {  // G N - delta 1 = -h,  1^T N = target

@@ -79,7 +79,9 @@ class Mim1dSolver {
   //! Approach of Hertz at the deepest strip for the given load (the paper's starting value) [m].
   [[nodiscard]] double hertz_start_approach(double normal_force_N) const;
   void update_lengths();
-  void build_matrices(bool with_jacobian);
+  enum class MatrixKind { Influence, Jacobian };
+  //! Fills G or the Jacobian on the active set and, with_displacement, u = G N (the residual's part).
+  void build_matrices(MatrixKind kind, bool with_displacement);
   [[nodiscard]] double displacement_at(std::size_t strip) const;
   void initialise_zone(double approach_m);
   void admit_strip(std::size_t strip, double penetration_m);
@@ -101,6 +103,7 @@ class Mim1dSolver {
   std::vector<double> basin_scratch_;   // deepest h of each strip's basin (initial guess)
   Eigen::MatrixXd influence_;       // G on the active set
   Eigen::MatrixXd jacobian_;        // dR/dN on the active set
+  Eigen::VectorXd displacement_;    // u = G N on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
   bool factorisation_is_jacobian_ = false;
   std::vector<double> column_h_, column_q_;
