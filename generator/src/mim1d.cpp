@@ -26,7 +26,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options)
-    : grid_(make_strip_grid(gap, options.strip_width_m)), E_star_Pa_(E_star_Pa), options_(options) {
+    : E_star_Pa_(E_star_Pa), options_(options) {
   if (!(std::isfinite(E_star_Pa) && E_star_Pa > 0.0))
     throw InputError("material", 0, "effective modulus must be positive and finite");
   if (!(options.tolerance > 0.0 && options.tolerance < 1e-2))
@@ -35,16 +35,32 @@ Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOpt
     throw InputError("max iterations", 0, "must be at least 1");
   if (options.curvature.smoothing_fraction <= 0.0 || !std::isfinite(options.curvature.smoothing_fraction))
     throw InputError("smoothing fraction", 0, "must be positive and finite");
+  (void)StripKernel::instance();  // build the kernel table at setup, not inside the first solve
+  reset(gap);
+}
+
+bool Mim1dSolver::matches(double E_star_Pa, const Mim1dOptions& o) const noexcept {
+  return E_star_Pa == E_star_Pa_ && o.strip_width_m == options_.strip_width_m && o.update == options_.update &&
+         o.curvature.treatment == options_.curvature.treatment &&
+         o.curvature.smoothing_fraction == options_.curvature.smoothing_fraction && o.tolerance == options_.tolerance &&
+         o.max_iterations == options_.max_iterations && o.max_outer_iterations == options_.max_outer_iterations &&
+         o.starting_zone_m == options_.starting_zone_m;
+}
+
+void Mim1dSolver::reset(const GapProfile& gap) {
+  fill_strip_grid(gap, options_.strip_width_m, grid_);
   b_ = grid_.half_width_m();
   kernel_scale_ = 2.0 / (kPi * kPi * E_star_Pa_ * b_);
   const std::size_t n = grid_.size();
   load_.assign(n, 0.0);
   length_.assign(n, 0.0);
   compliance_.assign(n, StripHertz{});
+  compliance_approach_ = std::numeric_limits<double>::quiet_NaN();
+  active_.clear();
   active_.reserve(n);
   column_h_.resize(n + 1);
   column_q_.resize(n + 1);
-  (void)StripKernel::instance();  // build the kernel table at setup, not inside the first solve
+  last_solve_succeeded_ = false;
 }
 
 void Mim1dSolver::update_lengths() {

@@ -25,6 +25,12 @@ double node_slope(const std::vector<double>& y, const std::vector<double>& h, st
 }  // namespace
 
 StripGrid make_strip_grid(const GapProfile& gap, double strip_width_m) {
+  StripGrid grid;
+  fill_strip_grid(gap, strip_width_m, grid);
+  return grid;
+}
+
+void fill_strip_grid(const GapProfile& gap, double strip_width_m, StripGrid& grid) {
   if (!(std::isfinite(strip_width_m) && strip_width_m > 0.0))
     throw InputError("--strip-width", 0, "strip width must be positive and finite, got " + std::to_string(strip_width_m));
   validate(gap);
@@ -34,7 +40,6 @@ StripGrid make_strip_grid(const GapProfile& gap, double strip_width_m) {
   if (last - first + 1 < 3)
     throw InputError(gap.source, 0,
                      "the gap's y-range holds fewer than 3 strips of width " + std::to_string(strip_width_m) + " m");
-  StripGrid grid;
   grid.strip_width_m = strip_width_m;
   const auto count = static_cast<std::size_t>(last - first + 1);
   grid.y_m.resize(count);
@@ -57,7 +62,6 @@ StripGrid make_strip_grid(const GapProfile& gap, double strip_width_m) {
     grid.A_per_m[i] = (1 - s) * gap.A_per_m[segment] + s * gap.A_per_m[segment + 1];
     grid.B_per_m[i] = (1 - s) * gap.B_per_m[segment] + s * gap.B_per_m[segment + 1];
   }
-  return grid;
 }
 
 }  // namespace ctab::gen

@@ -125,6 +125,7 @@ tables::Table generate_table(const TableConfig& config, const GeneratorInfo& inf
   const std::size_t sides = mirrored ? 1 : 2;
   const std::size_t total = n_dy * n_second * sides;
   std::vector<WheelContact> results(total);
+  std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(threads));  // one per thread
   std::atomic<std::size_t> done{0};
   auto work = [&] {
     if (config.mode == ContactMode::Wheelset) {
@@ -147,7 +148,8 @@ tables::Table generate_table(const TableConfig& config, const GeneratorInfo& inf
       const std::size_t i_dy = rest / n_second, i_second = rest % n_second;
       const double shift = left ? -dy[i_dy] : dy[i_dy], angle = left ? -roll[i_dy] : roll[i_dy];
       try {
-        results[task] = solve_wheel_contact(side, shift, angle, E_star, config.load_kind, config.load_values[i_second], options);
+        WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
+        results[task] = solve_wheel_contact(side, shift, angle, E_star, config.load_kind, config.load_values[i_second], options, workspace);
         if (!roll_ok[i_dy]) results[task].status = SolveStatus::MaxIterations;
       } catch (...) {
         results[task] = WheelContact{};

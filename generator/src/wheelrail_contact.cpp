@@ -29,6 +29,19 @@ struct PatchProblem {
   NormalSolution solution;
 };
 
+// Creates the patch's solver, or re-targets the one it already has.
+bool prepare_solver(PatchProblem& p, double E_star, const Mim1dOptions& options) {
+  try {
+    if (p.solver && p.solver->matches(E_star, options))
+      p.solver->reset(p.gap);
+    else
+      p.solver = std::make_unique<Mim1dSolver>(p.gap, E_star, options);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 class PatchBuilder {
  public:
   PatchBuilder(const SideGeometry& side, double dy, double roll, double z_first)
@@ -85,7 +98,9 @@ class PatchBuilder {
     p.sn = std::sin(p.angle);
     p.y0 = p.reference.rail_y_m;
     p.z0 = side_.rail().at(p.y0).z;
-    std::vector<double> s_values, h_values, a_values, b_values, y_values;
+    p.gap.source = "wheel-rail patch";
+    for (std::vector<double>* v : {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y}) v->clear();
+    // Towards -s first (then reversed), then from s = 0 towards +s: the samples come out in increasing s.
     for (int direction = -1; direction <= 1; direction += 2) {
       double n_rail = 0, n_wheel = 0, s_guess = p.reference.wheel_s_m;
       for (int k = (direction < 0 ? 1 : 0);; ++k) {
@@ -93,26 +108,16 @@ class PatchBuilder {
         double y = 0, B = 0, A = 0;
         if (!sample(p, s, n_rail, n_wheel, s_guess, y, B, A)) break;
         const double h = n_rail - n_wheel;
-        s_values.push_back(s);
-        h_values.push_back(h);
-        a_values.push_back(A);
-        b_values.push_back(B);
-        y_values.push_back(y);
+        p.gap.y_m.push_back(s);
+        p.gap.h_m.push_back(h);
+        p.gap.A_per_m.push_back(A);
+        p.gap.B_per_m.push_back(B);
+        p.rail_y.push_back(y);
         if (h > depth || k > 4000) break;
       }
-    }
-    std::vector<std::size_t> order(s_values.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s_values[a] < s_values[b]; });
-    p.gap = GapProfile{};
-    p.gap.source = "wheel-rail patch";
-    p.rail_y.clear();
-    for (const std::size_t i : order) {
-      p.gap.y_m.push_back(s_values[i]);
-      p.gap.h_m.push_back(h_values[i]);
-      p.gap.A_per_m.push_back(a_values[i]);
-      p.gap.B_per_m.push_back(b_values[i]);
-      p.rail_y.push_back(y_values[i]);
+      if (direction < 0)
+        for (std::vector<double>* v : {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y})
+          std::reverse(v->begin(), v->end());
     }
     return p.gap.size() >= 8;
   }
@@ -143,9 +148,29 @@ double expected_approach(const SideGeometry& side, const GapMinimum& m, double d
 
 }  // namespace
 
+struct WheelContactWorkspace::Impl {
+  std::vector<GapMinimum> minima;
+  std::vector<PatchProblem> pool;  // patch problems; the first `used` are this case's
+  std::size_t used = 0;
+  PatchProblem& acquire() { return pool[used++]; }  // the pool is sized before use
+};
+
+WheelContactWorkspace::WheelContactWorkspace() : impl_(std::make_unique<Impl>()) {}
+WheelContactWorkspace::~WheelContactWorkspace() = default;
+WheelContactWorkspace::WheelContactWorkspace(WheelContactWorkspace&&) noexcept = default;
+WheelContactWorkspace& WheelContactWorkspace::operator=(WheelContactWorkspace&&) noexcept = default;
+
 WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
                                  double load_value, const WheelRailOptions& options) {
+  WheelContactWorkspace workspace;
+  return solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace);
+}
+
+WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
+                                 double load_value, const WheelRailOptions& options, WheelContactWorkspace& workspace) {
   const auto start = std::chrono::steady_clock::now();
+  WheelContactWorkspace::Impl& ws = workspace.impl();
+  ws.used = 0;
   WheelContact result;
   result.dy_m = dy_m;
   result.roll_rad = roll_rad;
@@ -157,7 +182,7 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
   };
   if (!(std::isfinite(dy_m) && std::isfinite(roll_rad) && std::isfinite(load_value) && load_value >= 0.0))
     return finish(SolveStatus::InvalidInput);
-  std::vector<GapMinimum> minima;
+  std::vector<GapMinimum>& minima = ws.minima;
   double z_first = 0.0;
   side.gap_minima(dy_m, roll_rad, minima, z_first);
   if (minima.empty() || !std::isfinite(z_first)) return finish(SolveStatus::InvalidInput);
@@ -168,15 +193,16 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
     return finish(SolveStatus::NoContact);
   }
   const PatchBuilder builder(side, dy_m, roll_rad, z_first);
-  std::vector<PatchProblem> patches;
-  patches.emplace_back();
-  patches[0].reference = minima[0];
+  // At most one patch per gap minimum: size the pool now so that references into it stay valid.
+  if (ws.pool.size() < minima.size()) ws.pool.resize(minima.size());
   // Window depth: twice the expected approach; doubled when a contact reaches the window's end.
   double depth = std::max(kWindowFactor * expected_approach(side, minima[0], dy_m, roll_rad, E_star_Pa, load, load_value),
                           kMinimumWindowDepth_m);
   auto inside_window = [&](const GapMinimum& m) {
-    for (const PatchProblem& p : patches)
+    for (std::size_t k = 0; k < ws.used; ++k) {
+      const PatchProblem& p = ws.pool[k];
       if (!p.rail_y.empty() && m.rail_y_m >= p.rail_y.front() && m.rail_y_m <= p.rail_y.back()) return true;
+    }
     return false;
   };
   auto solve_patch = [&](PatchProblem& p, double vertical_approach) {
@@ -188,15 +214,12 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
     result.iterations += p.solution.iterations;
   };
   for (int attempt = 0; attempt < 4; ++attempt) {
-    patches.resize(1);
-    if (!builder.build(patches[0], depth, options.sample_step_m)) return finish(SolveStatus::InvalidInput);
-    try {
-      patches[0].solver = std::make_unique<Mim1dSolver>(patches[0].gap, E_star_Pa, options.mim1d);
-    } catch (const std::exception&) {
-      return finish(SolveStatus::InvalidInput);
-    }
+    ws.used = 0;
+    PatchProblem& main = ws.acquire();
+    main.reference = minima[0];
+    if (!builder.build(main, depth, options.sample_step_m)) return finish(SolveStatus::InvalidInput);
+    if (!prepare_solver(main, E_star_Pa, options.mim1d)) return finish(SolveStatus::InvalidInput);
     // Single patch first: the loading condition maps directly onto the strip problem.
-    PatchProblem& main = patches[0];
     if (load == LoadKind::Approach) {
       result.vertical_approach_m = load_value;
       solve_patch(main, load_value);
@@ -216,20 +239,17 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
     // Further patches whose gap the approach closes.
     for (std::size_t k = 1; k < minima.size(); ++k) {
       if (minima[k].gap_m >= result.vertical_approach_m || inside_window(minima[k])) continue;
-      PatchProblem extra;
+      PatchProblem& extra = ws.acquire();
       extra.reference = minima[k];
-      if (!builder.build(extra, minima[k].gap_m + depth, options.sample_step_m)) continue;
-      try {
-        extra.solver = std::make_unique<Mim1dSolver>(extra.gap, E_star_Pa, options.mim1d);
-      } catch (const std::exception&) {
-        continue;
-      }
-      patches.push_back(std::move(extra));
+      if (!builder.build(extra, minima[k].gap_m + depth, options.sample_step_m) ||
+          !prepare_solver(extra, E_star_Pa, options.mim1d))
+        --ws.used;  // give the slot back
     }
-    if (patches.size() > 1 && load != LoadKind::Approach) {
+    if (ws.used > 1 && load != LoadKind::Approach) {
       auto total = [&](double dz) {
         double sum = 0.0;
-        for (PatchProblem& p : patches) {
+        for (std::size_t k = 0; k < ws.used; ++k) {
+          PatchProblem& p = ws.pool[k];
           solve_patch(p, dz);
           const double n = is_success(p.solution.status) ? p.solution.normal_load_N : 0.0;
           sum += load == LoadKind::VerticalForce ? n * p.c : n;
@@ -242,14 +262,15 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
       if (!root.converged) return finish(SolveStatus::MaxIterations);
       result.vertical_approach_m = root.x;
       (void)total(root.x);
-    } else if (patches.size() > 1) {
-      for (std::size_t k = 1; k < patches.size(); ++k) solve_patch(patches[k], load_value);
+    } else if (ws.used > 1) {
+      for (std::size_t k = 1; k < ws.used; ++k) solve_patch(ws.pool[k], load_value);
     }
     break;
   }
   // Collect the patches.
   SolveStatus status = SolveStatus::Converged;
-  for (PatchProblem& p : patches) {
+  for (std::size_t slot = 0; slot < ws.used; ++slot) {
+    PatchProblem& p = ws.pool[slot];
     if (p.solution.status == SolveStatus::NoContact) continue;
     if (!is_success(p.solution.status)) status = p.solution.status;
     for (const PatchSolution& ps : p.solution.patches) {

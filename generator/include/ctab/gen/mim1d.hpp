@@ -57,6 +57,9 @@ struct Mim1dOptions {
 class Mim1dSolver {
  public:
   Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options);
+  //! Re-targets the solver to another gap (same material and options), keeping its storage: a workspace
+  //! reused case after case allocates only when a case needs more strips than any before. Throws InputError.
+  void reset(const GapProfile& gap);
 
   //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h). With warm_start the previous
   //! solution of this solver (if it converged) is the start: for sequences of nearby approaches.
@@ -65,6 +68,8 @@ class Mim1dSolver {
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N);
 
   [[nodiscard]] const StripGrid& grid() const noexcept { return grid_; }
+  //! True when this solver was set up for the same material and options (so reset() may reuse it).
+  [[nodiscard]] bool matches(double E_star_Pa, const Mim1dOptions& options) const noexcept;
 
  private:
   struct InnerResult {

@@ -6,6 +6,7 @@
 //! Every profile, analytic or measured, is first a parametric curve (ProfileCurve, monotone in y) and is then
 //! tabulated on a uniform lateral grid (ProfileTable) with z, dz/dy and d2z/dy2 at each node: evaluation is a
 //! cubic Hermite interpolation of z (exact slopes at the nodes) and a linear one of d2z/dy2.
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <string>
@@ -64,6 +65,14 @@ class ProfileTable {
   [[nodiscard]] bool contains(double y) const noexcept { return y >= y_min() && y <= y_max(); }
   //! Evaluates at y (clamped to the table range).
   [[nodiscard]] ProfilePoint at(double y) const noexcept;
+  //! z alone (the contact search's inner loop), the same cubic as at().
+  [[nodiscard]] double z_at(double y) const noexcept {
+    const double u = std::clamp((y - y0_) / step_, 0.0, static_cast<double>(z_.size() - 1));
+    const auto k = std::min(static_cast<std::size_t>(u), z_.size() - 2);
+    const double s = u - static_cast<double>(k), s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * z_[k] + (s3 - 2 * s2 + s) * dz_[k] * step_ + (-2 * s3 + 3 * s2) * z_[k + 1] +
+           (s3 - s2) * dz_[k + 1] * step_;
+  }
   //! Lowest y at which z reaches `depth` (the gauge face for a rail measured from its top), if any.
   [[nodiscard]] bool first_y_at_depth(double depth_m, double& y_out) const noexcept;
   //! The tabulated z values (provenance hashing).

@@ -24,5 +24,7 @@ struct StripGrid {
 //! Resamples a validated gap onto strips. Throws InputError if the width is not positive and finite or if
 //! fewer than 3 strips fit inside the gap's y-range.
 [[nodiscard]] StripGrid make_strip_grid(const GapProfile& gap, double strip_width_m);
+//! The same into an existing grid, reusing its storage.
+void fill_strip_grid(const GapProfile& gap, double strip_width_m, StripGrid& grid);
 
 }  // namespace ctab::gen

@@ -4,7 +4,8 @@
 //!
 //! Set-up (serial, may throw InputError): profiles, track, the process-wide kernel and Hertz tables. The
 //! parallel region has one task per case with a dynamic schedule (the cost varies tenfold between tread and
-//! flange cases); every task writes only its own preallocated result slot, nothing is reduced across cases,
+//! flange cases) and one WheelContactWorkspace per thread (indexed by omp_get_thread_num(); results do not
+//! depend on it); every task writes only its own preallocated result slot, nothing is reduced across cases,
 //! no I/O happens and no exception leaves the region (a failure becomes the case's status). The table is
 //! therefore bit-identical for any number of threads. When the two sides are mirror images (one wheel and one
 //! rail profile for both) and the lateral axis is symmetric, only the right wheel is solved: the left wheel at

@@ -15,6 +15,7 @@
 //! finder. A patch's contact angle is the direction of its resultant normal force: the load-weighted mean of the
 //! rail inclination over its strips (on a curved patch steeper than the inclination at the centre of pressure).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -75,7 +76,27 @@ struct WheelContact {
   std::vector<GapMinimum> near_misses;  //!< minima not in contact, with their vertical gap
 };
 
+//! Reusable storage of solve_wheel_contact: the patches' strip problems and their MIM-1D solvers. One per thread
+//! in a sweep; a case then allocates only when it needs more room than any case before it on that thread.
+//! Results do not depend on what the workspace solved before.
+class WheelContactWorkspace {
+ public:
+  WheelContactWorkspace();
+  ~WheelContactWorkspace();
+  WheelContactWorkspace(WheelContactWorkspace&&) noexcept;
+  WheelContactWorkspace& operator=(WheelContactWorkspace&&) noexcept;
+  struct Impl;
+  [[nodiscard]] Impl& impl() noexcept { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
 //! Solves the contact of one side (side frame: dy, roll as in wheelrail_geometry.hpp). Never throws.
+[[nodiscard]] WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
+                                               LoadKind load, double load_value, const WheelRailOptions& options,
+                                               WheelContactWorkspace& workspace);
+//! The same with a temporary workspace.
 [[nodiscard]] WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
                                                LoadKind load, double load_value, const WheelRailOptions& options);
 

@@ -9,6 +9,7 @@
 //! The rail's profile origin sits at y = gauge/2 - y_g, where y_g is the gauge point: the first point of the rail
 //! profile (from the track centre) that is `gauge_height` below the top; z = 0 is the plane on the rail tops.
 //! Vertical gap at S: g(S) = z_rail(y_rail(S)) - z_wheel(S); the wheel touches when min g = 0.
+#include <cmath>
 #include <vector>
 
 #include "ctab/gen/profile.hpp"
@@ -49,10 +50,19 @@ class SideGeometry {
 
   [[nodiscard]] WheelSurfacePoint wheel_point(double s_m, double dy_m, double roll_rad) const noexcept;
   //! Vertical gap at S for z_ws = 0 (so that min over S is the z_ws of first contact).
-  [[nodiscard]] double gap(double s_m, double dy_m, double roll_rad) const noexcept;
+  [[nodiscard]] double gap(double s_m, double dy_m, double roll_rad) const noexcept {
+    return gap_rotated(s_m, dy_m, std::cos(roll_rad), std::sin(roll_rad));
+  }
+  //! The same with the roll given by its cosine and sine (scan loops compute them once).
+  [[nodiscard]] double gap_rotated(double s_m, double dy_m, double cos_roll, double sin_roll) const noexcept {
+    const double yl = wheel_origin_y_ + s_m, zl = track_.nominal_radius_m + wheel_->z_at(s_m);
+    return rail_->z_at(dy_m + yl * cos_roll - zl * sin_roll - rail_origin_y_) - (yl * sin_roll + zl * cos_roll);
+  }
   //! All local minima of the gap over the overlapping range, the deepest first; gaps relative to the deepest.
   //! `first_contact_z_m` receives the z_ws at which the wheel touches. Scratch-free apart from the output.
   void gap_minima(double dy_m, double roll_rad, std::vector<GapMinimum>& minima, double& first_contact_z_m) const;
+  //! Only the z_ws of first contact (the two lowest coarse minima refined): the roll iteration's function.
+  [[nodiscard]] double first_contact_height(double dy_m, double roll_rad) const;
   //! Wheel profile range that lies over the rail for this shift and roll [m].
   void overlap(double dy_m, double roll_rad, double& s_begin, double& s_end) const noexcept;
 
