@@ -7,6 +7,8 @@
 #include <cmath>
 #include <ctime>
 #include <numbers>
+#include <condition_variable>
+#include <mutex>
 #include <thread>
 
 #include "ctab/gen/error.hpp"
@@ -158,11 +160,27 @@ tables::Table generate_table(const TableConfig& config, const GeneratorInfo& inf
       done.fetch_add(1, std::memory_order_relaxed);
     }
   };
-  // The sweep runs on a worker thread so that this thread can report progress without any I/O in the region.
-  std::thread worker(work);
-  while (progress && done.load(std::memory_order_relaxed) < total) {
-    progress(done.load(std::memory_order_relaxed), total);
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  // The sweep runs on a worker thread so that this thread can report progress without any I/O in the region;
+  // it wakes every 0.1 s, and at once when the sweep ends.
+  std::mutex mutex;
+  std::condition_variable finished_signal;
+  bool finished = false;
+  std::thread worker([&] {
+    work();
+    const std::lock_guard<std::mutex> lock(mutex);
+    finished = true;
+    finished_signal.notify_one();
+  });
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    while (!finished) {
+      if (progress) {
+        lock.unlock();
+        progress(done.load(std::memory_order_relaxed), total);
+        lock.lock();
+      }
+      finished_signal.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; });
+    }
   }
   worker.join();
   if (progress) progress(total, total);
