@@ -60,7 +60,6 @@ void Mim1dSolver::reset(const GapProfile& gap) {
   active_.reserve(n);
   column_h_.resize(n + 1);
   column_q_.resize(n + 1);
-  last_solve_succeeded_ = false;
 }
 
 void Mim1dSolver::update_lengths() {
@@ -303,7 +302,6 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
     bool fixed_point_step = !(newton && loads_known);
     if (!fixed_point_step) {
       factorisation_.compute(jacobian_);
-      factorisation_is_jacobian_ = true;
       next = loads - factorisation_.solve(residual);
       if (target_load_N) {  // bordered system: J dN - d(delta) 1 = -R,  1^T dN = -F
         slope = factorisation_.solve(ones);
@@ -316,7 +314,6 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
     if (fixed_point_step) {
       if (newton && loads_known) build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
       factorisation_.compute(influence_);
-      factorisation_is_jacobian_ = false;
       if (target_load_N) {  // G N - delta 1 = -h,  1^T N = target
         next = factorisation_.solve(rhs - approach_m * ones);  // G^-1 (-h)
         slope = factorisation_.solve(ones);
@@ -386,17 +383,15 @@ NormalSolution Mim1dSolver::make_solution(SolveStatus status, double approach_m)
   return solution;
 }
 
-NormalSolution Mim1dSolver::solve_for_approach(double approach_m, bool warm_start) {
+NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
   const auto start = std::chrono::steady_clock::now();
-  total_iterations_ = 0;
   if (!std::isfinite(approach_m)) {
     NormalSolution invalid = make_solution(SolveStatus::InvalidInput, approach_m);
     invalid.patches.clear();
     return invalid;
   }
   double approach = approach_m;
-  const InnerResult inner = solve_inner(approach, warm_start && last_solve_succeeded_, nullptr);
-  last_solve_succeeded_ = inner.status == SolveStatus::Converged;
+  const InnerResult inner = solve_inner(approach, false, nullptr);
   if (inner.status == SolveStatus::Converged) update_lengths();
   NormalSolution solution = make_solution(inner.status, approach_m);
   if (!is_success(inner.status)) solution.patches.clear(), solution.normal_load_N = 0.0;
@@ -432,7 +427,6 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   }
   if (solution.status != SolveStatus::Converged && solution.status != SolveStatus::ZoneTruncated)
     solution = solve_for_load_nested(normal_force_N, iterations);
-  last_solve_succeeded_ = solution.status == SolveStatus::Converged;
   solution.solve_time_s = seconds_since(start);
   return solution;
 }

@@ -61,9 +61,8 @@ class Mim1dSolver {
   //! reused case after case allocates only when a case needs more strips than any before. Throws InputError.
   void reset(const GapProfile& gap);
 
-  //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h). With warm_start the previous
-  //! solution of this solver (if it converged) is the start: for sequences of nearby approaches.
-  [[nodiscard]] NormalSolution solve_for_approach(double approach_m, bool warm_start = false);
+  //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h).
+  [[nodiscard]] NormalSolution solve_for_approach(double approach_m);
   //! Solve for a prescribed total normal force [N].
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N);
 
@@ -110,10 +109,7 @@ class Mim1dSolver {
   Eigen::MatrixXd jacobian_;        // dR/dN on the active set
   Eigen::VectorXd displacement_;    // u = G N on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
-  bool factorisation_is_jacobian_ = false;
   std::vector<double> column_h_, column_q_;
-  int total_iterations_ = 0;
-  bool last_solve_succeeded_ = false;
 };
 
 }  // namespace ctab::gen
