@@ -115,4 +115,4 @@ TEST_P(WheelRailContact, MatchesContact) {
 INSTANTIATE_TEST_SUITE_P(ContactCases, WheelRailContact,
                          ::testing::Values(Case{-1.0, "m1p00"}, Case{0.0, "p0p00"}, Case{1.0, "p1p00"}, Case{2.0, "p2p00"},
                                            Case{5.0, "p5p00"}),
-                         [](const auto& info) { return std::string("dy_") + info.param.tag; });
+                         [](const auto& param_info) { return std::string("dy_") + param_info.param.tag; });
