@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "ctab/gen/material.hpp"
@@ -42,6 +43,13 @@ const Table& small_table(int threads) {
 }
 
 std::string temp_path(const std::string& name) { return ::testing::TempDir() + name; }
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
 
 template <class T>
 void expect_bitwise_equal(const std::vector<T>& a, const std::vector<T>& b, const char* what) {
@@ -135,8 +143,7 @@ TEST(Table, BitIdenticalForOneAndTwoThreads) {
   const std::string pa = temp_path("one.h5"), pb = temp_path("two.h5");
   ASSERT_TRUE(ctab::tables::write_table(a, pa).ok());
   ASSERT_TRUE(ctab::tables::write_table(b, pb).ok());
-  std::ifstream fa(pa, std::ios::binary), fb(pb, std::ios::binary);
-  const std::string bytes_a((std::istreambuf_iterator<char>(fa)), {}), bytes_b((std::istreambuf_iterator<char>(fb)), {});
+  const std::string bytes_a = file_bytes(pa), bytes_b = file_bytes(pb);
   EXPECT_EQ(bytes_a.size(), bytes_b.size());
   EXPECT_TRUE(bytes_a == bytes_b);
 }
@@ -154,8 +161,7 @@ TEST(Table, MalformedFilesAreRejectedClearly) {
     EXPECT_NE(r.message.find("text.h5"), std::string::npos);
   }
   {  // truncated: the first half of a good file
-    std::ifstream in(good, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    const std::string bytes = file_bytes(good);
     std::ofstream(temp_path("truncated.h5"), std::ios::binary) << bytes.substr(0, bytes.size() / 2);
     EXPECT_NE(read(temp_path("truncated.h5")).status, TableStatus::Ok);
   }
