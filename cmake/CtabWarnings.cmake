@@ -6,9 +6,3 @@ target_compile_options(ctab_warnings INTERFACE
 if(CTAB_WERROR)
   target_compile_options(ctab_warnings INTERFACE -Werror)
 endif()
-
-add_library(ctab_optimise INTERFACE)
-if(CTAB_NATIVE)
-  # GCC 12 reports false maybe-uninitialized warnings inside its AVX-512 intrinsics as inlined by Eigen.
-  target_compile_options(ctab_optimise INTERFACE $<$<CONFIG:Release>:-march=native -Wno-maybe-uninitialized>)
-endif()

@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages ctab needs, only those that are missing.
 set -euo pipefail
 packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libhdf5-dev libgtest-dev googletest
-          libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+          libbenchmark-dev libcli11-dev ccache libtomlplusplus-dev nlohmann-json3-dev
           python3-matplotlib python3-h5py)
 missing=()
 for p in "${packages[@]}"; do

@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/mim1d.hpp"
-#include "ctab/gen/paper_cases.hpp"
-#include "ctab/gen/profile_io.hpp"
-#include "ctab/gen/table_generator.hpp"
-#include "ctab/gen/wheelrail_contact.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/fixtures/paper_cases.hpp"
+#include "ctab/io/profile_io.hpp"
+#include "ctab/sweep/table_generator.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
 #include <filesystem>
 
 namespace ctab::cli {

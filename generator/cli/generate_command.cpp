@@ -10,8 +10,9 @@
 
 #include "commands.hpp"
 #include "version.hpp"
-#include "ctab/gen/error.hpp"
-#include "ctab/gen/table_generator.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/contact/solve_status.hpp"
+#include "ctab/sweep/table_generator.hpp"
 
 
 namespace ctab::cli {

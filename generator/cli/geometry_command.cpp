@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ctab/gen/contact_geometry_sweep.hpp"
-#include "ctab/gen/error.hpp"
+#include "ctab/wheelrail/contact_geometry_sweep.hpp"
+#include "ctab/contact/error.hpp"
 #include "wheelrail_setup.hpp"
 
 namespace ctab::cli {

@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "ctab/gen/error.hpp"
-#include "ctab/gen/solve_status.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/contact/solve_status.hpp"
 #include "ctab/tables/table.hpp"
 
 namespace ctab::cli {

@@ -6,7 +6,7 @@
 
 #include "commands.hpp"
 #include "version.hpp"
-#include "ctab/gen/error.hpp"
+#include "ctab/contact/error.hpp"
 
 
 int main(int argc, char** argv) {

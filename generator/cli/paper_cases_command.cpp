@@ -2,11 +2,11 @@
 #include <cstdio>
 
 #include "commands.hpp"
-#include "ctab/gen/hertz.hpp"
-#include "ctab/gen/hertz_strip.hpp"
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/mim1d.hpp"
-#include "ctab/gen/paper_cases.hpp"
+#include "ctab/contact/hertz.hpp"
+#include "ctab/contact/hertz_strip.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/fixtures/paper_cases.hpp"
 
 namespace ctab::cli {
 

@@ -8,14 +8,14 @@
 #include <string>
 
 #include "commands.hpp"
-#include "ctab/gen/contact_geometry_sweep.hpp"
-#include "ctab/gen/error.hpp"
-#include "ctab/gen/gap_csv.hpp"
-#include "ctab/gen/hertz_strip.hpp"
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/mim1d.hpp"
-#include "ctab/gen/solution_json.hpp"
-#include "ctab/gen/wheelrail_contact.hpp"
+#include "ctab/wheelrail/contact_geometry_sweep.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/io/gap_csv.hpp"
+#include "ctab/contact/hertz_strip.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/io/solution_json.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "wheelrail_setup.hpp"
 
 namespace ctab::cli {

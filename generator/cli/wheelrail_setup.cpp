@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "ctab/gen/error.hpp"
+#include "ctab/contact/error.hpp"
 
 namespace ctab::cli {
 

@@ -4,8 +4,8 @@
 #include <memory>
 #include <string>
 
-#include "ctab/gen/profile_io.hpp"
-#include "ctab/gen/wheelrail_geometry.hpp"
+#include "ctab/io/profile_io.hpp"
+#include "ctab/wheelrail/wheelrail_geometry.hpp"
 
 namespace ctab::cli {
 

@@ -2,9 +2,9 @@
 // 0.2, 0.08 and 0.04 mm (paper Table 1). Setup (strip grid, kernel table) stays outside the timed loop.
 #include <benchmark/benchmark.h>
 
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/mim1d.hpp"
-#include "ctab/gen/paper_cases.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/fixtures/paper_cases.hpp"
 
 namespace {
 

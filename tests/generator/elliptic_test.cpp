@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ctab/gen/elliptic.hpp"
+#include "ctab/contact/elliptic.hpp"
 
 using namespace ctab::gen;
 

@@ -4,8 +4,8 @@
 #include <sstream>
 #include <string>
 
-#include "ctab/gen/error.hpp"
-#include "ctab/gen/gap_csv.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/io/gap_csv.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "ctab/gen/elliptic.hpp"
-#include "ctab/gen/hertz.hpp"
-#include "ctab/gen/material.hpp"
+#include "ctab/contact/elliptic.hpp"
+#include "ctab/contact/hertz.hpp"
+#include "ctab/contact/material.hpp"
 
 using namespace ctab::gen;
 

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ctab/gen/hertz.hpp"
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/mim1d.hpp"
-#include "ctab/gen/paper_cases.hpp"
+#include "ctab/contact/hertz.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/fixtures/paper_cases.hpp"
 
 using namespace ctab::gen;
 

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <map>
 
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/mim1d.hpp"
-#include "ctab/gen/paper_cases.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/fixtures/paper_cases.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;

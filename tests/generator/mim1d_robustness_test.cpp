@@ -6,10 +6,10 @@
 #include <cstdlib>
 #include <random>
 
-#include "ctab/gen/error.hpp"
-#include "ctab/gen/hertz_strip.hpp"
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/mim1d.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/contact/hertz_strip.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
 
 using namespace ctab::gen;
 

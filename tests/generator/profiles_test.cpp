@@ -5,9 +5,9 @@
 #include <fstream>
 #include <string>
 
-#include "ctab/gen/builtin_profiles.hpp"
-#include "ctab/gen/error.hpp"
-#include "ctab/gen/profile_io.hpp"
+#include "ctab/profiles/builtin_profiles.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/io/profile_io.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;

@@ -8,7 +8,7 @@
 #include <functional>
 #include <numbers>
 
-#include "ctab/gen/strip_kernel.hpp"
+#include "ctab/contact/strip_kernel.hpp"
 
 using ctab::gen::StripKernel;
 

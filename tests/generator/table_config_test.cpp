@@ -5,9 +5,9 @@
 #include <sstream>
 #include <string>
 
-#include "ctab/gen/error.hpp"
-#include "ctab/gen/table_config.hpp"
-#include "ctab/gen/table_generator.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/sweep/table_config.hpp"
+#include "ctab/sweep/table_generator.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;

@@ -4,15 +4,17 @@
 #include <hdf5.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/profile_io.hpp"
-#include "ctab/gen/table_generator.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/io/profile_io.hpp"
+#include "ctab/sweep/table_generator.hpp"
 #include "ctab/tables/table.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/profile_io.hpp"
-#include "ctab/gen/wheelrail_contact.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/io/profile_io.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "ctab/gen/contact_geometry_sweep.hpp"
-#include "ctab/gen/profile_io.hpp"
+#include "ctab/wheelrail/contact_geometry_sweep.hpp"
+#include "ctab/io/profile_io.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;

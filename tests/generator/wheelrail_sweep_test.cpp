@@ -7,11 +7,11 @@
 #include <cmath>
 #include <vector>
 
-#include "ctab/gen/builtin_profiles.hpp"
-#include "ctab/gen/contact_geometry_sweep.hpp"
-#include "ctab/gen/material.hpp"
-#include "ctab/gen/profile_io.hpp"
-#include "ctab/gen/wheelrail_contact.hpp"
+#include "ctab/profiles/builtin_profiles.hpp"
+#include "ctab/wheelrail/contact_geometry_sweep.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/io/profile_io.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
 
 using namespace ctab::gen;
 

@@ -1,0 +1,100 @@
+#pragma once
+//! MIM-1D normal contact solver (Qazi, Yin, Sebes, Chollet, Pozzolini, VSD 60(4):1322-1340, 2022).
+//!
+//! Method: the potential contact zone is cut into strips of width 2b along y; in strip i the pressure is
+//! semi-elliptic along x (Eq. 7) with half-length a_i tied to its peak pressure by the local Hertz relation
+//! a_i = c_i p0_i (Eq. 26; c_i from strip_compliance.hpp). Unknowns are the strip loads N_i = pi a_i b p0_i
+//! (Appendix 1, Eqs. A1-A4), so that a_i = sqrt(c_i N_i / (pi b)) and the compatibility equations read
+//!   sum_j G_ij(a_j) N_j = delta - h_i   for strips in contact (Eqs. 8-9, 13 and A2),
+//!   N_i = 0 and delta - h_i - u_i <= 0   elsewhere (Eq. 4),
+//! with G_ij = C_ij / (pi a_j b) from strip_kernel.hpp (closed form of Eqs. 10-12).
+//! Iteration (Figure 3): start from the interpenetration zone with the ANALYN estimate of every strip, measured
+//! from the deepest point of its own basin of h
+//! (Appendix 2: exact for an elliptic patch), a_i = sqrt(d_i / ((1 + alpha_i) A_i)), d_i = delta - (1 + beta_i) h_i,
+//! p0_i = a_i / c_i; solve; drop strips with non-positive load;
+//! update the lengths; re-admit strips that interpenetrate after deformation; repeat. Two update rules:
+//!   FixedPoint - the paper's: solve G(a) N = delta - h with the lengths of the previous iterate;
+//!   Newton     - (default) Newton's method on the same equations, the Jacobian including dG/da da/dN;
+//!                a step that would make a load non-positive falls back to the fixed-point step.
+//! Prescribed load (Eqs. 6 and 15): delta becomes one more unknown of the same Newton iteration (bordered
+//! system, two back-substitutions with one factorisation). Should that fail, the paper's outer iteration
+//! takes over: a safeguarded Newton iteration on delta with slope dN/d(delta) = 1^T J^-1 1 from the last
+//! factorisation (Eq. 16 when no slope is available), kept inside a bracket, bisecting when a step leaves
+//! it, the loads warm-started along J^-1 1.
+//! Validity: half-space (small contact angles across the patch), frictionless, quasi-identical materials;
+//! pressure symmetric in x (no yaw).
+#include <Eigen/Dense>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "ctab/contact/gap_profile.hpp"
+#include "ctab/contact/normal_solution.hpp"
+#include "ctab/contact/mim1d_options.hpp"
+#include "ctab/contact/strip_compliance.hpp"
+#include "ctab/contact/strip_grid.hpp"
+
+namespace ctab::gen {
+
+//! Solver for one gap profile. Construction resamples the gap onto strips (allocates, may throw InputError);
+//! solves never throw and report a SolveStatus.
+class Mim1dSolver {
+ public:
+  Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options);
+  //! Re-targets the solver to another gap (same material and options), keeping its storage: a workspace
+  //! reused case after case allocates only when a case needs more strips than any before. Throws InputError.
+  void reset(const GapProfile& gap);
+
+  //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h).
+  [[nodiscard]] NormalSolution solve_for_approach(double approach_m);
+  //! Solve for a prescribed total normal force [N].
+  [[nodiscard]] NormalSolution solve_for_load(double normal_force_N);
+
+  [[nodiscard]] const StripGrid& grid() const noexcept { return grid_; }
+  //! True when this solver was set up for the same material and options (so reset() may reuse it).
+  [[nodiscard]] bool matches(double E_star_Pa, const Mim1dOptions& options) const noexcept;
+
+ private:
+  struct InnerResult {
+    SolveStatus status = SolveStatus::NumericalFailure;
+    int iterations = 0;
+    double residual = 0.0;
+  };
+  //! Solves for the approach (in/out) or, with a target load, for both loads and approach.
+  InnerResult solve_inner(double& approach_m, bool warm_start, const double* target_load_N);
+  [[nodiscard]] NormalSolution solve_for_load_nested(double normal_force_N, int& iterations);
+  void refresh_compliances(double approach_m);
+  //! Approach of Hertz at the deepest strip for the given load (the paper's starting value) [m].
+  [[nodiscard]] double hertz_start_approach(double normal_force_N) const;
+  void update_lengths();
+  enum class MatrixKind { Influence, Jacobian };
+  //! Fills G or the Jacobian on the active set and, with_displacement, u = G N (the residual's part).
+  void build_matrices(MatrixKind kind, bool with_displacement);
+  [[nodiscard]] double displacement_at(std::size_t strip) const;
+  void initialise_zone(double approach_m);
+  void admit_strip(std::size_t strip, double penetration_m);
+  [[nodiscard]] NormalSolution make_solution(SolveStatus status, double approach_m) const;
+
+  StripGrid grid_;
+  double E_star_Pa_;
+  Mim1dOptions options_;
+  double b_;                        // strip half-width [m]
+  double kernel_scale_;             // 2 / (pi^2 E* b) [m/N]
+  std::vector<StripHertz> compliance_;  // local Hertz data per strip (all strips)
+  double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for
+  std::vector<double> scratch_;
+  std::vector<double> load_;        // N_i [N] (all strips; 0 outside the active set)
+  std::vector<double> length_;      // a_i [m] (all strips)
+  std::vector<std::size_t> active_; // strips in contact, increasing
+  std::vector<std::size_t> violators_;  // strips that interpenetrate after deformation (scratch)
+  std::vector<double> penetrations_;    // their penetration [m] (scratch)
+  std::vector<double> basin_scratch_;   // deepest h of each strip's basin (initial guess)
+  Eigen::MatrixXd influence_;       // G on the active set
+  Eigen::MatrixXd jacobian_;        // dR/dN on the active set
+  Eigen::VectorXd displacement_;    // u = G N on the active set
+  Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
+  std::vector<double> column_h_, column_q_;
+};
+
+}  // namespace ctab::gen

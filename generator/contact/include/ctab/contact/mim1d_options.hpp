@@ -1,0 +1,27 @@
+#pragma once
+//! Options of the MIM-1D solver (mim1d.hpp), free of Eigen so that configurations can hold them.
+#include <cstdint>
+#include <optional>
+#include <utility>
+
+#include "ctab/contact/strip_compliance.hpp"
+
+namespace ctab::gen {
+
+enum class Mim1dUpdate : std::int8_t {
+  FixedPoint = 0,  //!< the paper's successive substitution (Figure 3)
+  Newton = 1,      //!< Newton on the strip loads (default)
+};
+
+struct Mim1dOptions {
+  double strip_width_m = 0.2e-3;          //!< 2b [m]
+  Mim1dUpdate update = Mim1dUpdate::Newton;
+  CurvatureOptions curvature;             //!< lateral-curvature treatment in Eq. 26
+  double tolerance = 1.0e-11;             //!< relative convergence tolerance (loads, force) [-]
+  int max_iterations = 300;               //!< inner iterations per approach
+  int max_outer_iterations = 60;          //!< iterations on delta for a prescribed load
+  //! Initial potential zone [y_min, y_max] [m] (Figure 7 experiments); default: the interpenetration zone.
+  std::optional<std::pair<double, double>> starting_zone_m;
+};
+
+}  // namespace ctab::gen

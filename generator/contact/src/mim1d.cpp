@@ -1,0 +1,502 @@
+#include "ctab/contact/mim1d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "ctab/contact/error.hpp"
+#include "ctab/contact/hertz.hpp"
+#include "ctab/contact/strip_kernel.hpp"
+
+namespace ctab::gen {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Relative step and residual below which strips outside the set are checked for interpenetration.
+constexpr double kAdmissionCheckLevel = 1.0e-3;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options)
+    : E_star_Pa_(E_star_Pa), options_(options) {
+  if (!(std::isfinite(E_star_Pa) && E_star_Pa > 0.0))
+    throw InputError("material", 0, "effective modulus must be positive and finite");
+  if (!(options.tolerance > 0.0 && options.tolerance < 1e-2))
+    throw InputError("tolerance", 0, "must lie in (0, 0.01)");
+  if (options.max_iterations < 1 || options.max_outer_iterations < 1)
+    throw InputError("max iterations", 0, "must be at least 1");
+  if (options.curvature.smoothing_fraction <= 0.0 || !std::isfinite(options.curvature.smoothing_fraction))
+    throw InputError("smoothing fraction", 0, "must be positive and finite");
+  (void)StripKernel::instance();  // build the kernel table at setup, not inside the first solve
+  reset(gap);
+}
+
+bool Mim1dSolver::matches(double E_star_Pa, const Mim1dOptions& o) const noexcept {
+  return E_star_Pa == E_star_Pa_ && o.strip_width_m == options_.strip_width_m && o.update == options_.update &&
+         o.curvature.treatment == options_.curvature.treatment &&
+         o.curvature.smoothing_fraction == options_.curvature.smoothing_fraction && o.tolerance == options_.tolerance &&
+         o.max_iterations == options_.max_iterations && o.max_outer_iterations == options_.max_outer_iterations &&
+         o.starting_zone_m == options_.starting_zone_m;
+}
+
+void Mim1dSolver::reset(const GapProfile& gap) {
+  fill_strip_grid(gap, options_.strip_width_m, grid_);
+  b_ = grid_.half_width_m();
+  kernel_scale_ = 2.0 / (kPi * kPi * E_star_Pa_ * b_);
+  const std::size_t n = grid_.size();
+  load_.assign(n, 0.0);
+  length_.assign(n, 0.0);
+  compliance_.assign(n, StripHertz{});
+  compliance_approach_ = std::numeric_limits<double>::quiet_NaN();
+  active_.clear();
+  active_.reserve(n);
+  column_h_.resize(n + 1);
+  column_q_.resize(n + 1);
+}
+
+void Mim1dSolver::update_lengths() {
+  for (const std::size_t j : active_) length_[j] = std::sqrt(compliance_[j].compliance_m_per_Pa * load_[j] / (kPi * b_));
+}
+
+void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
+  const StripKernel& kernel = StripKernel::instance();
+  const auto n = static_cast<Eigen::Index>(active_.size());
+  const bool jacobian = kind == MatrixKind::Jacobian;
+  Eigen::MatrixXd& matrix = jacobian ? jacobian_ : influence_;
+  matrix.resize(n, n);
+  displacement_.setZero(n);
+  const std::size_t first = active_.front(), last = active_.back();
+  for (Eigen::Index c = 0; c < n; ++c) {
+    const std::size_t j = active_[static_cast<std::size_t>(c)];
+    const double beta = b_ / length_[j];
+    const std::size_t reach = std::max(j - first, last - j);
+    // H_k = h((2k+1) b/a_j), Q_k = t h'(t) there; column entries are differences of neighbours.
+    const bool fast = StripKernel::in_table(beta) && StripKernel::in_table(static_cast<double>(2 * reach + 1) * beta);
+    for (std::size_t k = 0; k <= reach; ++k) {
+      const double t = static_cast<double>(2 * k + 1) * beta;
+      if (fast)
+        kernel.value_and_scaled_slope_in_table(t, column_h_[k], column_q_[k]);
+      else
+        kernel.value_and_scaled_slope(t, column_h_[k], column_q_[k]);
+    }
+    const double load = with_displacement ? load_[j] : 0.0;
+    double* column = matrix.col(c).data();
+    double* u = displacement_.data();
+    for (Eigen::Index r = 0; r < n; ++r) {
+      const std::size_t i = active_[static_cast<std::size_t>(r)];
+      const std::size_t k = i > j ? i - j : j - i;
+      const double g = kernel_scale_ * (k == 0 ? 2.0 * column_h_[0] : column_h_[k] - column_h_[k - 1]);
+      u[r] += g * load;  // u = G N, accumulated column by column
+      if (jacobian) {
+        // d(G_ij N_j)/dN_j = G_ij + (a_j/2) dG_ij/da_j, with dh(c/a)/da = -t h'(t)/a.
+        const double dq = k == 0 ? 2.0 * column_q_[0] : column_q_[k] - column_q_[k - 1];
+        column[r] = g - 0.5 * kernel_scale_ * dq;
+      } else {
+        column[r] = g;
+      }
+    }
+  }
+}
+
+double Mim1dSolver::displacement_at(std::size_t strip) const {
+  const StripKernel& kernel = StripKernel::instance();
+  double u = 0.0;
+  for (const std::size_t j : active_) {
+    const double d = grid_.y_m[strip] - grid_.y_m[j];
+    const double dh = kernel.value((d + b_) / length_[j]) - kernel.value((d - b_) / length_[j]);
+    u += kernel_scale_ * dh * load_[j];
+  }
+  return u;
+}
+
+void Mim1dSolver::initialise_zone(double approach_m) {
+  active_.clear();
+  std::fill(load_.begin(), load_.end(), 0.0);
+  refresh_compliances(approach_m);
+  const std::size_t n = grid_.size();
+  const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  // ANALYN is local: each strip is measured from the deepest point of its own basin of h (between neighbouring
+  // local maxima), so that every separate contact region starts loaded.
+  std::vector<double>& basin_minimum = basin_scratch_;
+  basin_minimum.assign(n, 0.0);
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = begin + 1;
+    while (end < n && !(end + 1 < n && grid_.h_m[end] > grid_.h_m[end - 1] && grid_.h_m[end] >= grid_.h_m[end + 1])) ++end;
+    const double low = *std::min_element(grid_.h_m.begin() + static_cast<std::ptrdiff_t>(begin), grid_.h_m.begin() + static_cast<std::ptrdiff_t>(end));
+    std::fill(basin_minimum.begin() + static_cast<std::ptrdiff_t>(begin), basin_minimum.begin() + static_cast<std::ptrdiff_t>(end), low);
+    begin = end;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(grid_.h_m[i] < approach_m)) continue;  // potential zone = interpenetration zone
+    if (options_.starting_zone_m &&
+        (grid_.y_m[i] < options_.starting_zone_m->first || grid_.y_m[i] > options_.starting_zone_m->second))
+      continue;
+    // ANALYN (Eqs. A5-A6); strips it leaves out start unloaded but stay candidates (re-admitted when they
+    // interpenetrate after deformation).
+    const StripHertz& local = compliance_[i];
+    const double d = (approach_m - basin_minimum[i]) - local.depth_factor * (grid_.h_m[i] - basin_minimum[i]);
+    if (!(d > 0.0)) continue;
+    const double length = std::sqrt(d / (local.length_factor * grid_.A_per_m[i]));
+    load_[i] = kPi * b_ * length * length / local.compliance_m_per_Pa;  // N = pi a b p0, p0 = a / c
+    active_.push_back(i);
+  }
+  if (active_.empty()) {
+    const double depth = approach_m - grid_.h_m[deepest];
+    active_.push_back(deepest);
+    load_[deepest] = kPi * b_ * depth / (2.0 * grid_.A_per_m[deepest] * compliance_[deepest].compliance_m_per_Pa);
+  }
+}
+
+void Mim1dSolver::admit_strip(std::size_t strip, double penetration_m) {
+  const auto position = std::lower_bound(active_.begin(), active_.end(), strip);
+  if (position != active_.end() && *position == strip) return;
+  std::size_t neighbour = position == active_.end() ? active_.back() : *position;
+  if (position != active_.begin()) {
+    const std::size_t before = *(position - 1);
+    if (position == active_.end() || strip - before < neighbour - strip) neighbour = before;
+  }
+  // Start from the load whose own displacement closes the strip's penetration, G_ii(a(N)) N = penetration
+  // (a few Newton steps on the monotone self term), capped at the nearest loaded strip's load.
+  const double c = compliance_[strip].compliance_m_per_Pa;
+  const StripKernel& kernel = StripKernel::instance();
+  double load = std::max(load_[neighbour] * 0.25, 1e-12);
+  for (int i = 0; i < 8 && penetration_m > 0.0; ++i) {
+    const double a = std::sqrt(c * load / (kPi * b_));
+    double h = 0.0, t_dh = 0.0;
+    kernel.value_and_scaled_slope(b_ / a, h, t_dh);
+    const double u = kernel_scale_ * 2.0 * h * load, du = kernel_scale_ * 2.0 * (h - 0.5 * t_dh);
+    load = std::clamp(load - (u - penetration_m) / du, 0.05 * load, 4.0 * load);
+  }
+  load_[strip] = std::min(load, load_[neighbour]);
+  length_[strip] = std::sqrt(c * load_[strip] / (kPi * b_));
+  active_.insert(position, strip);
+}
+
+void Mim1dSolver::refresh_compliances(double approach_m) {
+  // Pointwise compliances do not depend on the approach; smoothed ones do (their weights).
+  if (approach_m == compliance_approach_ ||
+      (options_.curvature.treatment == CurvatureTreatment::Pointwise && !std::isnan(compliance_approach_)))
+    return;
+  strip_compliances(grid_, E_star_Pa_, approach_m, options_.curvature, compliance_, scratch_);
+  compliance_approach_ = approach_m;
+}
+
+Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_start, const double* target_load_N) {
+  InnerResult result;
+  const std::size_t n_all = grid_.size();
+  const double h_min = *std::min_element(grid_.h_m.begin(), grid_.h_m.end());
+  if (!(approach_m - h_min > 0.0)) {
+    active_.clear();
+    std::fill(load_.begin(), load_.end(), 0.0);
+    result.status = SolveStatus::NoContact;
+    return result;
+  }
+  bool loads_known = warm_start && !active_.empty();
+  if (loads_known) {  // strips that no longer interpenetrate cannot carry load
+    std::erase_if(active_, [&](std::size_t i) {
+      if (grid_.h_m[i] < approach_m) return false;
+      load_[i] = 0.0;
+      return true;
+    });
+    loads_known = !active_.empty();
+  }
+  if (!loads_known) {
+    initialise_zone(approach_m);
+    loads_known = true;
+  }
+
+  const bool newton = options_.update == Mim1dUpdate::Newton;
+  double last_change = std::numeric_limits<double>::infinity();
+  bool set_checked = false;  // Eq. 4 checked since the active set last changed
+  std::size_t growth = 0;     // admission reach, in strips
+  Eigen::VectorXd rhs, residual, next, loads, ones, slope;
+  for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
+    result.iterations = iteration;
+    if (active_.empty() || !(approach_m - h_min > 0.0)) return result;  // NumericalFailure
+    refresh_compliances(approach_m);
+    for (const std::size_t i : active_)
+      if (!(compliance_[i].compliance_m_per_Pa > 0.0 && std::isfinite(compliance_[i].compliance_m_per_Pa))) {
+        result.status = SolveStatus::InvalidInput;
+        return result;
+      }
+    const double depth = approach_m - h_min;
+    if (loads_known) update_lengths();
+    build_matrices(newton && loads_known ? MatrixKind::Jacobian : MatrixKind::Influence, loads_known);
+    const auto n = static_cast<Eigen::Index>(active_.size());
+    rhs.resize(n);
+    loads.resize(n);
+    ones.setOnes(n);
+    for (Eigen::Index r = 0; r < n; ++r) {
+      const std::size_t i = active_[static_cast<std::size_t>(r)];
+      rhs(r) = approach_m - grid_.h_m[i];
+      loads(r) = load_[i];
+    }
+    const double force_mismatch = target_load_N ? loads.sum() - *target_load_N : 0.0;
+    if (loads_known) {
+      residual = displacement_ - rhs;
+      result.residual = residual.cwiseAbs().maxCoeff() / depth;
+      if (!std::isfinite(result.residual)) return result;
+      const bool force_converged = !target_load_N || std::abs(force_mismatch) <= options_.tolerance * *target_load_N;
+      // Newton converges quadratically: once the residual is at tolerance a step below sqrt(tol) is final.
+      const double change_tolerance = newton ? std::sqrt(options_.tolerance) : options_.tolerance;
+      const bool converged_on_set =
+          last_change <= change_tolerance && result.residual <= options_.tolerance && force_converged;
+      // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
+      // and again at convergence.
+      const bool roughly_converged = last_change <= kAdmissionCheckLevel && result.residual <= kAdmissionCheckLevel;
+      if (converged_on_set || (roughly_converged && !set_checked)) {
+        set_checked = true;
+        // A violator also brings its interpenetrating neighbours within a reach that doubles each round, so
+        // a contact far wider than the starting zone grows in O(log n) rounds (extra strips leave again
+        // through a non-positive load).
+        // Candidates: the unloaded interpenetrating strips next to the contact, and the deepest strip of every
+        // unloaded run of the interpenetration zone (where a separate contact would start).
+        violators_.clear();
+        penetrations_.clear();
+        auto check = [&](std::size_t i) {
+          const double gap = grid_.h_m[i] + displacement_at(i) - approach_m;
+          if (gap < -options_.tolerance * depth) violators_.push_back(i), penetrations_.push_back(-gap);
+        };
+        for (std::size_t i = 0; i < n_all;) {
+          if (!(grid_.h_m[i] < approach_m) || load_[i] > 0.0) {
+            ++i;
+            continue;
+          }
+          std::size_t end = i, deepest = i;
+          while (end < n_all && grid_.h_m[end] < approach_m && !(load_[end] > 0.0)) {
+            if (grid_.h_m[end] < grid_.h_m[deepest]) deepest = end;
+            ++end;
+          }
+          if (i > 0 && load_[i - 1] > 0.0) check(i);
+          if (end < n_all && load_[end] > 0.0 && end - 1 != i) check(end - 1);
+          if (deepest != i && deepest != end - 1) check(deepest);
+          i = end;
+        }
+        for (std::size_t k = 0; k < violators_.size(); ++k) {
+          const std::size_t v = violators_[k];
+          const std::size_t lo = v > growth ? v - growth : 0, hi = std::min(n_all - 1, v + growth);
+          for (std::size_t i = lo; i <= hi; ++i)
+            if (grid_.h_m[i] < approach_m && !(load_[i] > 0.0)) admit_strip(i, i == v ? penetrations_[k] : 0.0);
+        }
+        if (!violators_.empty()) {
+          growth = 2 * growth + 1;
+          set_checked = false;
+          last_change = std::numeric_limits<double>::infinity();
+          continue;
+        }
+        if (converged_on_set) {
+          result.status = SolveStatus::Converged;
+          return result;
+        }
+      }
+    }
+    double next_approach = approach_m;
+    bool fixed_point_step = !(newton && loads_known);
+    if (!fixed_point_step) {
+      factorisation_.compute(jacobian_);
+      next = loads - factorisation_.solve(residual);
+      if (target_load_N) {  // bordered system: J dN - d(delta) 1 = -R,  1^T dN = -F
+        slope = factorisation_.solve(ones);
+        const double d_approach = (-force_mismatch - (next - loads).sum()) / slope.sum();
+        next += d_approach * slope;
+        next_approach = approach_m + d_approach;
+      }
+      if ((next.array() <= 0.0).any()) fixed_point_step = true;  // Newton overshoots at a patch edge
+    }
+    if (fixed_point_step) {
+      if (newton && loads_known) build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
+      factorisation_.compute(influence_);
+      if (target_load_N) {  // G N - delta 1 = -h,  1^T N = target
+        next = factorisation_.solve(rhs - approach_m * ones);  // G^-1 (-h)
+        slope = factorisation_.solve(ones);
+        next_approach = (*target_load_N - next.sum()) / slope.sum();
+        next += next_approach * slope;
+      } else {
+        next = factorisation_.solve(rhs);
+      }
+    }
+    if (!next.allFinite() || !std::isfinite(next_approach)) return result;
+    const double largest = next.maxCoeff();
+    if (!(largest > 0.0)) return result;
+    approach_m = next_approach;
+    // Strips with non-positive load leave the contact (paper Figure 3).
+    bool removed = false;
+    for (Eigen::Index r = 0; r < n; ++r) {
+      const std::size_t i = active_[static_cast<std::size_t>(r)];
+      load_[i] = std::max(next(r), 0.0);
+      removed = removed || next(r) <= 0.0;
+    }
+    if (removed) {
+      std::erase_if(active_, [&](std::size_t i) { return load_[i] <= 0.0; });
+      last_change = std::numeric_limits<double>::infinity();
+      set_checked = false;
+    } else {
+      last_change = loads_known ? (next - loads).cwiseAbs().maxCoeff() / largest : std::numeric_limits<double>::infinity();
+    }
+    loads_known = true;
+  }
+  result.status = SolveStatus::MaxIterations;
+  return result;
+}
+
+NormalSolution Mim1dSolver::make_solution(SolveStatus status, double approach_m) const {
+  NormalSolution solution;
+  solution.method = "mim1d";
+  solution.status = status;
+  solution.approach_m = approach_m;
+  if (status == SolveStatus::Converged && !active_.empty() &&
+      (active_.front() == 0 || active_.back() + 1 == grid_.size()))
+    solution.status = SolveStatus::ZoneTruncated;
+  PatchSolution* patch = nullptr;
+  std::size_t previous = 0;
+  for (const std::size_t i : active_) {
+    if (patch == nullptr || i != previous + 1) {
+      solution.patches.emplace_back();
+      patch = &solution.patches.back();
+      patch->y_min_m = grid_.y_m[i] - b_;
+    }
+    previous = i;
+    StripSolution strip;
+    strip.y_m = grid_.y_m[i];
+    strip.half_length_m = length_[i];
+    strip.load_N = load_[i];
+    strip.p0_Pa = load_[i] / (kPi * length_[i] * b_);
+    patch->strips.push_back(strip);
+    patch->normal_force_N += strip.load_N;
+    patch->area_m2 += 4.0 * length_[i] * b_;
+    patch->max_pressure_Pa = std::max(patch->max_pressure_Pa, strip.p0_Pa);
+    patch->centre_of_pressure_y_m += strip.load_N * strip.y_m;
+    patch->y_max_m = grid_.y_m[i] + b_;
+  }
+  for (PatchSolution& p : solution.patches) {
+    p.centre_of_pressure_y_m /= p.normal_force_N;
+    solution.normal_load_N += p.normal_force_N;
+  }
+  return solution;
+}
+
+NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!std::isfinite(approach_m)) {
+    NormalSolution invalid = make_solution(SolveStatus::InvalidInput, approach_m);
+    invalid.patches.clear();
+    return invalid;
+  }
+  double approach = approach_m;
+  const InnerResult inner = solve_inner(approach, false, nullptr);
+  if (inner.status == SolveStatus::Converged) update_lengths();
+  NormalSolution solution = make_solution(inner.status, approach_m);
+  if (!is_success(inner.status)) solution.patches.clear(), solution.normal_load_N = 0.0;
+  solution.iterations = inner.iterations;
+  solution.residual = inner.residual;
+  solution.solve_time_s = seconds_since(start);
+  return solution;
+}
+
+double Mim1dSolver::hertz_start_approach(double normal_force_N) const {
+  const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  const double A0 = grid_.A_per_m[deepest];
+  const HertzContact hertz = hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / 20.0), E_star_Pa_, normal_force_N);
+  return grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : 1e-6);
+}
+
+NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
+  const auto start = std::chrono::steady_clock::now();
+  int iterations = 0;
+  NormalSolution solution;
+  if (std::isfinite(normal_force_N) && normal_force_N > 0.0) {
+    // Combined iteration on loads and approach, from Hertz at the deepest point (the paper's start).
+    double approach = hertz_start_approach(normal_force_N);
+    const InnerResult inner = solve_inner(approach, false, &normal_force_N);
+    iterations = inner.iterations;
+    if (inner.status == SolveStatus::Converged) {
+      update_lengths();
+      solution = make_solution(inner.status, approach);
+      solution.iterations = iterations;
+      solution.outer_iterations = 1;
+      solution.residual = std::abs(solution.normal_load_N - normal_force_N) / normal_force_N;
+    }
+  }
+  if (solution.status != SolveStatus::Converged && solution.status != SolveStatus::ZoneTruncated)
+    solution = solve_for_load_nested(normal_force_N, iterations);
+  solution.solve_time_s = seconds_since(start);
+  return solution;
+}
+
+NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& iterations) {
+  auto finish = [&](SolveStatus status, double approach, int outer, double residual) {
+    NormalSolution solution = make_solution(status, approach);
+    if (!is_success(status)) solution.patches.clear(), solution.normal_load_N = 0.0;
+    solution.iterations = iterations;
+    solution.outer_iterations = outer;
+    solution.residual = residual;
+    return solution;
+  };
+  const auto deepest = static_cast<std::size_t>(
+      std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  const double h_min = grid_.h_m[deepest];
+  if (!(std::isfinite(normal_force_N) && normal_force_N >= 0.0)) {
+    active_.clear();
+    return finish(SolveStatus::InvalidInput, h_min, 0, 0.0);
+  }
+  if (normal_force_N == 0.0) {
+    active_.clear();
+    return finish(SolveStatus::NoContact, h_min, 0, 0.0);
+  }
+  double approach = hertz_start_approach(normal_force_N);
+  double lower = h_min, upper = std::numeric_limits<double>::infinity();
+  bool warm = false;
+  Eigen::VectorXd ones, slope_vector;
+  auto eq16 = [&](double force) {  // paper Eq. 16, with delta measured from first contact
+    return h_min + (approach - h_min) * std::cbrt((normal_force_N / force) * (normal_force_N / force));
+  };
+  for (int outer = 1; outer <= options_.max_outer_iterations; ++outer) {
+    double solved_approach = approach;
+    const InnerResult inner = solve_inner(solved_approach, warm, nullptr);
+    iterations += inner.iterations;
+    if (inner.status == SolveStatus::NoContact) {
+      lower = approach;
+      approach = std::isfinite(upper) ? 0.5 * (lower + upper) : h_min + 2.0 * (approach - h_min) + 1e-9;
+      warm = false;
+      continue;
+    }
+    if (inner.status != SolveStatus::Converged) return finish(inner.status, approach, outer, inner.residual);
+    update_lengths();
+    double force = 0.0;
+    for (const std::size_t i : active_) force += load_[i];
+    const double mismatch = force - normal_force_N;
+    const double force_residual = std::abs(mismatch) / normal_force_N;
+    if (force_residual <= options_.tolerance) return finish(SolveStatus::Converged, approach, outer, force_residual);
+    (mismatch < 0.0 ? lower : upper) = approach;
+    // Newton on delta with dN/d(delta) = 1^T J^-1 1 from the last factorisation.
+    const auto n = static_cast<Eigen::Index>(active_.size());
+    ones.setOnes(n);
+    slope_vector = factorisation_.rows() == n ? Eigen::VectorXd(factorisation_.solve(ones)) : Eigen::VectorXd();
+    const double slope = slope_vector.size() == n ? slope_vector.sum() : 0.0;
+    double next = (slope > 0.0 && std::isfinite(slope)) ? approach - mismatch / slope : eq16(force);
+    if (!(next > lower && next < upper)) {
+      next = std::isfinite(upper) ? 0.5 * (lower + upper) : eq16(force);
+      if (!(next > lower)) next = h_min + 2.0 * (approach - h_min);
+    }
+    if (slope_vector.size() == n) {  // warm start along dN/d(delta)
+      for (Eigen::Index r = 0; r < n; ++r) {
+        const std::size_t i = active_[static_cast<std::size_t>(r)];
+        const double predicted = load_[i] + slope_vector(r) * (next - approach);
+        load_[i] = predicted > 0.0 ? predicted : 0.5 * load_[i];
+      }
+    }
+    approach = next;
+    warm = true;
+  }
+  return finish(SolveStatus::MaxIterations, approach, options_.max_outer_iterations, 1.0);
+}
+
+}  // namespace ctab::gen

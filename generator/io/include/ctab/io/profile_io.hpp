@@ -1,0 +1,53 @@
+#pragma once
+//! Reading wheel and rail profiles: built-in names or point files, brought to the canonical form of
+//! profile.hpp (SI; y towards the field side; z down; wheel: y = S from the tape circle, flange at y < 0).
+//!
+//! Formats (by extension):
+//! - Simpack `.prw` / `.prr`: header and spline blocks; honours mirror.y, mirror.z, inversion, shift.y/z,
+//!   bound.y/z, point.dist.min and units.len.f (user length units per metre); `rotate` must be 0.
+//! - MiniProf `.whl` / `.ban`: `Key=Value` header up to the first empty line, `ColumnDef=X,Y[,...]`, comment
+//!   lines starting with ! " % #. Units mm. `.whl`: X from the flange back, so S = X - 70 mm. `.ban`: mirrored
+//!   in y by default (MiniProf's X runs the other way), z auto-detected.
+//! - anything else: two columns `y z` (comma, semicolon or white space; one optional header line), units mm
+//!   unless `length_unit_m` says otherwise.
+//! Options may mirror y or z on top of the file's own settings; z (and a wheel's y) are auto-detected when
+//! not given: a rail's ends lie below its top, a wheel's flange tip (largest z) at y < 0.
+//! Point data are smoothed by the arc-length smoothing spline (smoothing_spline.hpp) with a smoothing length
+//! of 1 mm by default. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
+//! the highest point of the head.
+//! Errors (InputError) name the file, the line and what was expected: missing header block, non-numeric point,
+//! fewer than 10 points, backward steps (loops), non-finite values, implausible total length (units).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ctab/profiles/profile.hpp"
+
+namespace ctab::gen {
+
+enum class ProfileRole { Wheel, Rail };
+
+struct ProfileReadOptions {
+  std::optional<bool> mirror_y;          //!< mirror y (on top of the file's setting); default per format/auto
+  std::optional<bool> mirror_z;          //!< mirror z; default auto-detect
+  double length_unit_m = 1e-3;           //!< unit of plain-text and MiniProf coordinates [m]
+  double smoothing_length_m = 1e-3;      //!< L of the smoothing spline [m]; 0 interpolates
+  double inclination = 1.0 / 40.0;       //!< rail inclination tan(angle) towards the track centre; 0: as given
+};
+
+//! Points of a profile file in canonical orientation, increasing y, SI.
+struct ProfilePoints {
+  std::vector<double> y_m, z_m;
+  std::vector<std::size_t> line;  //!< source line of each point
+};
+
+[[nodiscard]] ProfilePoints read_profile_points(const std::string& path, ProfileRole role, const ProfileReadOptions& options);
+
+//! Parses a rail inclination: a ratio such as "1/40" or a number in [0, 0.2). Throws InputError naming
+//! `source`, `line` and `what` (the option or key) otherwise.
+[[nodiscard]] double parse_inclination(const std::string& text, const std::string& source, std::size_t line, const std::string& what);
+
+//! A profile table from a built-in name (wheel: "S1002"; rail: "UIC60" or "60E1") or a file path.
+[[nodiscard]] ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options);
+
+}  // namespace ctab::gen

@@ -1,0 +1,295 @@
+#include "ctab/io/profile_io.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <memory>
+
+#include "ctab/profiles/builtin_profiles.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/profiles/smoothing_spline.hpp"
+
+namespace ctab::gen {
+
+namespace {
+
+struct RawPoint {
+  double y, z;
+  std::size_t line;
+};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string extension_of(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  return lower(path.substr(dot + 1));
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+std::vector<std::string> split_numbers(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string current;
+  for (const char c : line) {
+    if (c == ',' || c == ';' || c == ' ' || c == '\t' || c == '\r') {
+      if (!current.empty()) fields.push_back(current);
+      current.clear();
+    } else {
+      current += c;
+    }
+  }
+  if (!current.empty()) fields.push_back(current);
+  return fields;
+}
+
+bool parse_double(const std::string& text, double& value) {
+  const char* begin = text.data() + (text.size() > 1 && text[0] == '+' ? 1 : 0);  // from_chars rejects '+'
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+RawPoint parse_point(const std::vector<std::string>& fields, std::size_t column_y, std::size_t column_z,
+                     const std::string& path, std::size_t line) {
+  if (fields.size() <= std::max(column_y, column_z))
+    throw InputError(path, line, "expected a point with at least " + std::to_string(std::max(column_y, column_z) + 1) +
+                                     " numbers, got " + std::to_string(fields.size()));
+  RawPoint p{0, 0, line};
+  if (!parse_double(fields[column_y], p.y) || !parse_double(fields[column_z], p.z))
+    throw InputError(path, line, "expected numeric coordinates, got '" + fields[column_y] + " " + fields[column_z] + "'");
+  if (!std::isfinite(p.y) || !std::isfinite(p.z)) throw InputError(path, line, "non-finite coordinate");
+  return p;
+}
+
+struct Parsed {
+  std::vector<RawPoint> points;  // in metres
+  bool mirror_y = false, mirror_z = false, invert = false;
+  std::optional<bool> default_mirror_y;
+  double shift_y = 0.0;  // applied after mirroring [m]
+};
+
+Parsed read_simpack(std::ifstream& in, const std::string& path) {
+  Parsed parsed;
+  std::map<std::string, double> keys;
+  bool header = false, spline = false, points = false, ended = false;
+  std::string text;
+  std::size_t line = 0;
+  std::vector<RawPoint> raw;
+  while (std::getline(in, text)) {
+    ++line;
+    std::string t = trim(text.substr(0, text.find_first_of("!%")));
+    if (t.empty()) continue;
+    const std::string key = lower(t);
+    if (key == "header.begin") header = true;
+    else if (key == "spline.begin") spline = true;
+    else if (key == "point.begin") points = true;
+    else if (key == "point.end") { points = false; ended = true; }
+    else if (points) raw.push_back(parse_point(split_numbers(t), 0, 1, path, line));
+    else if (const auto eq = t.find('='); eq != std::string::npos) {
+      double value = 0.0;
+      if (parse_double(trim(t.substr(eq + 1)), value)) keys[lower(trim(t.substr(0, eq)))] = value;
+    }
+  }
+  if (!header || !spline) throw InputError(path, 0, "missing Simpack header.begin/spline.begin block");
+  if (!ended) throw InputError(path, line, "missing point.begin ... point.end block");
+  auto get = [&](const char* name, double fallback) { return keys.count(name) ? keys[name] : fallback; };
+  if (std::abs(get("rotate", 0.0)) > 1e-12) throw InputError(path, 0, "Simpack 'rotate' is not supported (must be 0)");
+  const double per_metre = get("units.len.f", 1.0);
+  if (!(per_metre > 0.0)) throw InputError(path, 0, "units.len.f must be positive");
+  const double shift_y = get("shift.y", 0.0), shift_z = get("shift.z", 0.0), min_distance = get("point.dist.min", 0.0);
+  const double y_lo = get("bound.y.min", 1.0), y_hi = get("bound.y.max", 0.0);
+  const double z_lo = get("bound.z.min", 1.0), z_hi = get("bound.z.max", 0.0);
+  for (RawPoint p : raw) {
+    p.y += shift_y;
+    p.z += shift_z;
+    if (y_lo < y_hi && (p.y < y_lo || p.y > y_hi)) continue;
+    if (z_lo < z_hi) p.z = std::clamp(p.z, z_lo, z_hi);
+    if (!parsed.points.empty() && min_distance > 0.0 &&
+        std::hypot(p.y / per_metre - parsed.points.back().y, p.z / per_metre - parsed.points.back().z) < min_distance / per_metre)
+      continue;
+    parsed.points.push_back({p.y / per_metre, p.z / per_metre, p.line});
+  }
+  parsed.mirror_y = get("mirror.y", 0.0) != 0.0;
+  parsed.mirror_z = get("mirror.z", 0.0) != 0.0;
+  parsed.invert = get("inversion", 0.0) != 0.0;
+  return parsed;
+}
+
+Parsed read_miniprof(std::ifstream& in, const std::string& path, const std::string& extension, double unit) {
+  Parsed parsed;
+  std::size_t column_y = 0, column_z = 1;
+  bool in_header = true, saw_header = false;
+  std::string text;
+  std::size_t line = 0;
+  while (std::getline(in, text)) {
+    ++line;
+    const std::string t = trim(text);
+    if (in_header) {
+      if (t.empty()) {
+        if (saw_header) in_header = false;
+        continue;
+      }
+      if (t.front() == '#' || t.front() == '!' || t.front() == '"' || t.front() == '%') continue;
+      const auto eq = t.find('=');
+      if (eq == std::string::npos) {
+        if (!saw_header) throw InputError(path, line, "expected a MiniProf 'Key=Value' header before the points");
+        in_header = false;  // data without the blank separator line
+      } else {
+        saw_header = true;
+        if (lower(trim(t.substr(0, eq))) == "columndef") {
+          const auto columns = split_numbers(lower(t.substr(eq + 1)));
+          const auto x = std::find(columns.begin(), columns.end(), "x"), y = std::find(columns.begin(), columns.end(), "y");
+          if (x == columns.end() || y == columns.end()) throw InputError(path, line, "ColumnDef must name X and Y");
+          column_y = static_cast<std::size_t>(x - columns.begin());
+          column_z = static_cast<std::size_t>(y - columns.begin());
+        }
+        continue;
+      }
+    }
+    if (t.empty() || t.front() == '#' || t.front() == '!' || t.front() == '"' || t.front() == '%') continue;
+    RawPoint p = parse_point(split_numbers(t), column_y, column_z, path, line);
+    parsed.points.push_back({p.y * unit, p.z * unit, line});
+  }
+  if (!saw_header) throw InputError(path, 0, "missing MiniProf header (Key=Value lines and an empty line)");
+  if (extension == "whl") parsed.shift_y = -70.0e-3;  // X from the flange back: S = X - 70 mm
+  if (extension == "ban") parsed.default_mirror_y = true;
+  return parsed;
+}
+
+Parsed read_columns(std::ifstream& in, const std::string& path, double unit) {
+  Parsed parsed;
+  std::string text;
+  std::size_t line = 0;
+  bool first = true;
+  while (std::getline(in, text)) {
+    ++line;
+    const std::string t = trim(text);
+    if (t.empty() || t.front() == '#' || t.front() == '!' || t.front() == '%') continue;
+    const auto fields = split_numbers(t);
+    double probe = 0.0;
+    if (first && fields.size() >= 2 && !parse_double(fields[0], probe) && !parse_double(fields[1], probe)) {
+      first = false;  // a header line
+      continue;
+    }
+    first = false;
+    if (fields.size() != 2) throw InputError(path, line, "expected 2 columns 'y z', got " + std::to_string(fields.size()));
+    const RawPoint p = parse_point(fields, 0, 1, path, line);
+    parsed.points.push_back({p.y * unit, p.z * unit, line});
+  }
+  return parsed;
+}
+
+std::shared_ptr<const ProfileCurve> reorigin_at_highest_point(std::shared_ptr<const ProfileCurve> curve,
+                                                              const std::string& name) {
+  const ProfileTable provisional(*curve, kProfileTableStep_m, name);
+  const auto [y, z] = provisional.highest_point();
+  return std::make_shared<TransformedCurve>(std::move(curve), 0.0, -y, -z);
+}
+
+}  // namespace
+
+ProfilePoints read_profile_points(const std::string& path, ProfileRole role, const ProfileReadOptions& options) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open profile file");
+  const std::string extension = extension_of(path);
+  Parsed parsed = (extension == "prw" || extension == "prr") ? read_simpack(in, path)
+                  : (extension == "whl" || extension == "ban") ? read_miniprof(in, path, extension, options.length_unit_m)
+                                                               : read_columns(in, path, options.length_unit_m);
+  auto& points = parsed.points;
+  if (points.size() < 10)
+    throw InputError(path, 0, "expected at least 10 profile points, got " + std::to_string(points.size()));
+  bool mirror_y = parsed.mirror_y != options.mirror_y.value_or(parsed.default_mirror_y.value_or(false));
+  bool mirror_z = parsed.mirror_z;
+  for (RawPoint& p : points) {
+    if (mirror_y) p.y = -p.y;
+    if (mirror_z) p.z = -p.z;
+    p.y += parsed.shift_y;
+  }
+  if (parsed.invert) std::reverse(points.begin(), points.end());
+  if (points.front().y > points.back().y) std::reverse(points.begin(), points.end());
+  // Auto-detect z (and a wheel's y): a rail's ends lie below its top; a wheel's flange tip is its lowest point.
+  if (!options.mirror_z) {
+    const auto mid = points[points.size() / 2].z;
+    const bool upside_down = role == ProfileRole::Rail ? std::max(points.front().z, points.back().z) < mid
+                                                       : -std::min_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.z < b.z; })->z >
+                                                             std::max_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.z < b.z; })->z;
+    if (upside_down) for (RawPoint& p : points) p.z = -p.z;
+  } else if (*options.mirror_z) {
+    for (RawPoint& p : points) p.z = -p.z;
+  }
+  if (role == ProfileRole::Wheel && !options.mirror_y && !parsed.default_mirror_y) {
+    const auto tip = std::max_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.z < b.z; });
+    if (tip->y > 0.5 * (points.front().y + points.back().y)) {
+      for (RawPoint& p : points) p.y = -p.y;
+      std::reverse(points.begin(), points.end());
+    }
+  }
+  // Drop near-vertical end roundings (never in contact; they would make z(y) multivalued).
+  auto steep = [](const RawPoint& a, const RawPoint& b) { return std::abs(b.z - a.z) > 50.0 * std::abs(b.y - a.y); };
+  while (points.size() > 10 && steep(points[0], points[1])) points.erase(points.begin());
+  while (points.size() > 10 && steep(points[points.size() - 2], points.back())) points.pop_back();
+  double length = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (!(points[i].y > points[i - 1].y))
+      throw InputError(path, points[i].line,
+                       "profile steps backwards in y (a loop or overhang); points must be ordered along the profile");
+    length += std::hypot(points[i].y - points[i - 1].y, points[i].z - points[i - 1].z);
+  }
+  if (length < 5e-3 || length > 0.5)
+    throw InputError(path, 0, "profile length " + std::to_string(length * 1e3) +
+                                  " mm is implausible (expected 5 to 500 mm): check the length unit");
+  ProfilePoints out;
+  for (const RawPoint& p : points) {
+    out.y_m.push_back(p.y);
+    out.z_m.push_back(p.z);
+    out.line.push_back(p.line);
+  }
+  return out;
+}
+
+double parse_inclination(const std::string& text, const std::string& source, std::size_t line, const std::string& what) {
+  double value = -1.0;
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) {
+    if (!parse_double(trim(text), value)) value = -1.0;
+  } else {
+    double numerator = 0.0, denominator = 0.0;
+    if (parse_double(trim(text.substr(0, slash)), numerator) && parse_double(trim(text.substr(slash + 1)), denominator) &&
+        denominator != 0.0)
+      value = numerator / denominator;
+  }
+  if (!(std::isfinite(value) && value >= 0.0 && value < 0.2))
+    throw InputError(source, line, (what.empty() ? "" : what + ": ") + "expected a ratio such as 1/40 or a number in [0, 0.2), got '" + text + "'");
+  return value;
+}
+
+ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options) {
+  const std::string name = lower(spec);
+  std::shared_ptr<const ProfileCurve> curve;
+  if (role == ProfileRole::Wheel && name == "s1002") {
+    return ProfileTable(*s1002_curve(), kProfileTableStep_m, "S1002");
+  }
+  if (role == ProfileRole::Rail && (name == "uic60" || name == "60e1")) {
+    return ProfileTable(*uic60_inclined_curve(options.inclination), kProfileTableStep_m, "UIC60");
+  }
+  const ProfilePoints points = read_profile_points(spec, role, options);
+  curve = std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, options.smoothing_length_m);
+  if (role == ProfileRole::Rail) {
+    if (options.inclination != 0.0) curve = std::make_shared<TransformedCurve>(curve, -std::atan(options.inclination), 0.0, 0.0);
+    curve = reorigin_at_highest_point(curve, spec);
+  }
+  return ProfileTable(*curve, kProfileTableStep_m, spec);
+}
+
+}  // namespace ctab::gen

@@ -1,0 +1,104 @@
+#include "ctab/profiles/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ctab/contact/error.hpp"
+
+namespace ctab::gen {
+
+TransformedCurve::TransformedCurve(std::shared_ptr<const ProfileCurve> base, double angle_rad, double shift_y_m,
+                                   double shift_z_m)
+    : base_(std::move(base)), cos_(std::cos(angle_rad)), sin_(std::sin(angle_rad)), shift_y_(shift_y_m), shift_z_(shift_z_m) {}
+
+CurvePoint TransformedCurve::at(double t) const {
+  const CurvePoint p = base_->at(t);
+  CurvePoint q;
+  q.y = cos_ * p.y - sin_ * p.z + shift_y_;
+  q.z = sin_ * p.y + cos_ * p.z + shift_z_;
+  q.dy = cos_ * p.dy - sin_ * p.dz;
+  q.dz = sin_ * p.dy + cos_ * p.dz;
+  q.d2y = cos_ * p.d2y - sin_ * p.d2z;
+  q.d2z = sin_ * p.d2y + cos_ * p.d2z;
+  return q;
+}
+
+double ProfilePoint::curvature() const {
+  const double g = 1.0 + dz * dz;
+  return d2z / (g * std::sqrt(g));
+}
+
+ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string name) : name_(std::move(name)), step_(step_m) {
+  const double t0 = curve.t_begin(), t1 = curve.t_end();
+  const CurvePoint first = curve.at(t0), last = curve.at(t1);
+  if (!(last.y > first.y)) throw InputError(name_, 0, "profile must extend in +y");
+  y0_ = std::ceil(first.y / step_m) * step_m;
+  const auto count = static_cast<std::size_t>(std::floor((last.y - y0_) / step_m)) + 1;
+  z_.resize(count);
+  dz_.resize(count);
+  d2z_.resize(count);
+  double t_lo = t0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double y = y0_ + step_m * static_cast<double>(k);
+    // Bracket [t_lo, t_hi] with y(t_lo) <= y <= y(t_hi): grow t_hi from the previous solution.
+    double lo = t_lo, hi = t1;
+    double t = lo;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const CurvePoint p = curve.at(t);
+      const double f = p.y - y;
+      if (std::abs(f) <= 1e-15) break;
+      if (f < 0.0) lo = t; else hi = t;
+      double next = (p.dy > 0.0) ? t - f / p.dy : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      if (std::abs(next - t) <= 1e-16 * (1.0 + std::abs(t))) { t = next; break; }
+      t = next;
+    }
+    t_lo = t;
+    const CurvePoint p = curve.at(t);
+    if (!(p.dy > 0.0))
+      throw InputError(name_, 0, "profile is vertical or turns back near y = " + std::to_string(y * 1e3) + " mm");
+    const double slope = p.dz / p.dy;
+    z_[k] = p.z;
+    dz_[k] = slope;
+    // d2z/dy2 = (y' z'' - z' y'') / y'^3
+    d2z_[k] = (p.dy * p.d2z - p.dz * p.d2y) / (p.dy * p.dy * p.dy);
+  }
+}
+
+ProfilePoint ProfileTable::at(double y) const noexcept {
+  const double u = std::clamp((y - y0_) / step_, 0.0, static_cast<double>(z_.size() - 1));
+  const auto k = std::min(static_cast<std::size_t>(u), z_.size() - 2);
+  const double s = u - static_cast<double>(k);
+  const double h = step_;
+  const double z0 = z_[k], z1 = z_[k + 1], m0 = dz_[k] * h, m1 = dz_[k + 1] * h;
+  const double s2 = s * s, s3 = s2 * s;
+  ProfilePoint p;
+  p.z = (2 * s3 - 3 * s2 + 1) * z0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * z1 + (s3 - s2) * m1;
+  p.dz = ((6 * s2 - 6 * s) * z0 + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * z1 + (3 * s2 - 2 * s) * m1) / h;
+  p.d2z = (1 - s) * d2z_[k] + s * d2z_[k + 1];
+  return p;
+}
+
+bool ProfileTable::first_y_at_depth(double depth_m, double& y_out) const noexcept {
+  for (std::size_t k = 0; k + 1 < z_.size(); ++k) {
+    if ((z_[k] - depth_m) * (z_[k + 1] - depth_m) > 0.0 || z_[k] == z_[k + 1]) continue;
+    if (z_[k] < depth_m && z_[k + 1] < depth_m) continue;
+    // Refine on the Hermite cubic by bisection.
+    double lo = y0_ + step_ * static_cast<double>(k), hi = lo + step_;
+    const bool decreasing = z_[k] > z_[k + 1];
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      ((at(mid).z > depth_m) == decreasing ? lo : hi) = mid;
+    }
+    y_out = 0.5 * (lo + hi);
+    return true;
+  }
+  return false;
+}
+
+std::pair<double, double> ProfileTable::highest_point() const noexcept {
+  const auto k = static_cast<std::size_t>(std::min_element(z_.begin(), z_.end()) - z_.begin());
+  return {y0_ + step_ * static_cast<double>(k), z_[k]};
+}
+
+}  // namespace ctab::gen

@@ -1,0 +1,90 @@
+#pragma once
+//! Normal contact of one wheel on its rail at a given lateral shift and roll: rigid contact search, strip problems
+//! in the inclined contact planes, MIM-1D (or Hertz) per patch, and the loading condition.
+//!
+//! Patches: the deepest gap minimum opens a patch; its strip problem lives in the plane tangent to the rail at that
+//! point (angle delta0): s along the plane, h(s) the separation of rail and wheel along the plane normal,
+//! A(s) = cos(delta)/(2 r) with r the wheel's rolling radius there (the radius seen in the contact plane is
+//! r/cos(delta)), B(s) = h''/2 from the two profile curvatures. The window grows from s = 0 while h stays below
+//! twice the expected approach (at least 50 um; doubled if the contact reaches its end), so close minima (the near-conformal tread, tread and flange
+//! root at a shift of 5 mm) fall into the same patch, as CONTACT combines them. A minimum outside every window
+//! whose gap the approach closes opens a patch of its own; the rest are near misses, reported with their gaps.
+//! Loading: total normal force (sum over patches; the paper's and CONTACT's convention), vertical force
+//! (sum of N_k cos delta_k), or vertical approach of the wheel beyond first contact (each patch then takes the
+//! normal approach dz cos delta_k). With several patches the vertical approach is found by a safeguarded root
+//! finder. A patch's contact angle is the direction of its resultant normal force: the load-weighted mean of the
+//! rail inclination over its strips (on a curved patch steeper than the inclination at the centre of pressure).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/wheelrail/wheelrail_options.hpp"
+#include "ctab/wheelrail/wheelrail_geometry.hpp"
+
+namespace ctab::gen {
+
+struct PatchStrip {
+  double s_m = 0.0;             //!< lateral coordinate in the contact plane [m]
+  double y_rail_m = 0.0;        //!< the same point on the rail profile [m]
+  double half_length_m = 0.0;   //!< a_i [m]
+  double p0_Pa = 0.0;           //!< p0_i [Pa]
+};
+
+struct ContactPatch {
+  std::string zone;                   //!< "tread" (S > -26 mm, S1002 section B and beyond) or "flange"
+  double normal_force_N = 0.0;
+  double area_m2 = 0.0;
+  double max_pressure_Pa = 0.0;
+  double approach_m = 0.0;            //!< normal approach of the patch [m]
+  double plane_angle_rad = 0.0;       //!< inclination of the contact plane (rail slope at the reference point) [rad]
+  double contact_angle_rad = 0.0;     //!< direction of the resultant normal force (load-weighted rail inclination) [rad]
+  double y_rail_m = 0.0;              //!< contact reference point (deepest rigid point) on the rail [m]
+  double y_wheel_m = 0.0;             //!< the same on the wheel, origin at the tape circle [m]
+  double rolling_radius_m = 0.0;      //!< rolling radius at the reference point [m]
+  double y_cop_rail_m = 0.0;          //!< centre of pressure on the rail [m]
+  double s_min_m = 0.0, s_max_m = 0.0;  //!< lateral extent of the loaded strips in the plane [m]
+  std::vector<PatchStrip> strips;
+};
+
+struct WheelContact {
+  SolveStatus status = SolveStatus::InvalidInput;
+  double dy_m = 0.0;                  //!< lateral shift of the wheelset [m]
+  double roll_rad = 0.0;              //!< roll angle [rad]
+  double vertical_approach_m = 0.0;   //!< wheel lowered beyond first contact [m]
+  double first_contact_z_m = 0.0;     //!< z_ws of first contact, relative to the nominal r_nom [m]
+  GapMinimum rigid_contact;           //!< the rigid first-contact point (rolling radius for dr)
+  double normal_force_N = 0.0;        //!< sum over patches
+  double vertical_force_N = 0.0;      //!< sum of N_k cos(delta_k)
+  int iterations = 0;                 //!< MIM-1D iterations, all patches and root-finding steps
+  double solve_time_s = 0.0;
+  std::vector<ContactPatch> patches;
+  std::vector<GapMinimum> near_misses;  //!< minima not in contact, with their vertical gap
+};
+
+//! Reusable storage of solve_wheel_contact: the patches' strip problems and their MIM-1D solvers. One per thread
+//! in a sweep; a case then allocates only when it needs more room than any case before it on that thread.
+//! Results do not depend on what the workspace solved before.
+class WheelContactWorkspace {
+ public:
+  WheelContactWorkspace();
+  ~WheelContactWorkspace();
+  WheelContactWorkspace(WheelContactWorkspace&&) noexcept;
+  WheelContactWorkspace& operator=(WheelContactWorkspace&&) noexcept;
+  struct Impl;
+  [[nodiscard]] Impl& impl() noexcept { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+//! Solves the contact of one side (side frame: dy, roll as in wheelrail_geometry.hpp). Never throws.
+[[nodiscard]] WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
+                                               LoadKind load, double load_value, const WheelRailOptions& options,
+                                               WheelContactWorkspace& workspace);
+//! The same with a temporary workspace.
+[[nodiscard]] WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
+                                               LoadKind load, double load_value, const WheelRailOptions& options);
+
+}  // namespace ctab::gen

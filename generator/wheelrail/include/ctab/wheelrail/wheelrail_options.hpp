@@ -1,0 +1,24 @@
+#pragma once
+//! Loading kinds, normal-contact methods and options of the wheel-rail contact (wheelrail_contact.hpp), free of
+//! Eigen so that configurations can hold them.
+#include <cstdint>
+
+#include "ctab/contact/mim1d_options.hpp"
+
+namespace ctab::gen {
+
+enum class LoadKind : std::int8_t {
+  NormalForce = 0,    //!< total normal force [N]
+  VerticalForce = 1,  //!< vertical wheel load [N]
+  Approach = 2,       //!< vertical approach of the wheel beyond first contact [m]
+};
+
+enum class NormalMethod : std::int8_t { Mim1d = 0, Hertz = 1 };
+
+struct WheelRailOptions {
+  NormalMethod method = NormalMethod::Mim1d;
+  Mim1dOptions mim1d;                 //!< strip width, curvature treatment, tolerances
+  double sample_step_m = 0.1e-3;      //!< sampling of h(s) in the contact plane [m]
+};
+
+}  // namespace ctab::gen
