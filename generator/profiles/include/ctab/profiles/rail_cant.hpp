@@ -43,12 +43,11 @@ inline double polyline_z(const std::vector<double>& y, const std::vector<double>
 //! y where the polyline first reaches depth `level` walking from index `from` by `step` (+1 or -1).
 inline std::optional<double> face_at_depth(const std::vector<double>& y, const std::vector<double>& z,
                                            std::size_t from, int step, double level) {
-  for (std::size_t i = from; ; ) {
+  for (std::size_t i = from; step > 0 ? i + 1 < y.size() : i > 0; i = step > 0 ? i + 1 : i - 1) {
     const std::size_t next = step > 0 ? i + 1 : i - 1;
-    if ((step > 0 && next >= y.size()) || (step < 0 && i == 0)) return std::nullopt;
     if (z[next] >= level) return y[i] + (level - z[i]) / (z[next] - z[i]) * (y[next] - y[i]);
-    i = next;
   }
+  return std::nullopt;
 }
 
 //! Slope b of the least-squares line over [centre - half_width, centre + half_width].
