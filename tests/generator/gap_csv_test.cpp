@@ -41,9 +41,22 @@ TEST(GapCsv, RejectsMalformedInputWithFileLineAndField) {
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n1e-3,nan,1,1\n"), "gap.csv:3: field 'h_m': value is not finite");
   EXPECT_EQ(error_of(kHeader + "0,0,1\n"), "gap.csv:2: expected 4 fields, got 3");
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n0,0,1,1\n"), "gap.csv:3: field 'y_m': strips must be strictly increasing in y");
-  EXPECT_EQ(error_of(kHeader + "0,0,-1,1\n"), "gap.csv:2: field 'A_per_m': must be positive, got -1");
+  EXPECT_EQ(error_of(kHeader + "0,0,-1,1\n"), "gap.csv:2: field 'A_per_m': must be positive, got '-1'");
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n1e-3,0,1,1\n"), "gap.csv:3: need at least 3 rows of gap data, got 2");
   EXPECT_EQ(error_of(kHeader), "gap.csv:1: need at least 3 rows of gap data, got 0");
+}
+
+TEST(GapCsv, SkipsAUtf8ByteOrderMark) {
+  std::istringstream in("\xEF\xBB\xBF" + kHeader + "-1e-3,1e-6,2,1\n0,0,2,1\n1e-3,1e-6,2,1\n");
+  const GapProfile gap = parse_gap_csv(in, "bom.csv");
+  ASSERT_EQ(gap.size(), 3u);
+  EXPECT_DOUBLE_EQ(gap.y_m[0], -1e-3);
+}
+
+TEST(GapCsv, EchoesAHugeFieldCutAt60Characters) {
+  const std::string huge(2'000'000, 'x');  // a 2 MB field
+  const std::string message = error_of(kHeader + "0,0,1,1\n1e-3," + huge + ",1,1\n");
+  EXPECT_EQ(message, "gap.csv:3: field 'h_m': expected a number, got '" + std::string(60, 'x') + "\xE2\x80\xA6'");
 }
 
 TEST(GapCsv, MissingFile) {

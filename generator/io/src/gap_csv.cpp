@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ctab/contact/error.hpp"
+#include "ctab/io/text_input.hpp"
 
 namespace ctab::gen {
 
@@ -61,9 +62,10 @@ GapProfile parse_gap_csv(std::istream& in, const std::string& source) {
   std::size_t field_count = 0;
   bool have_header = false;
   std::string line;
+  LineReader reader(in);  // skips a UTF-8 byte-order mark
   std::size_t line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
+  while (reader.next(line)) {
+    line_number = reader.line();
     if (is_blank_or_comment(line)) continue;
     const auto fields = split_fields(line);
     if (!have_header) {
@@ -89,14 +91,14 @@ GapProfile parse_gap_csv(std::istream& in, const std::string& source) {
       const auto value = parse_number(fields[column_index[c]]);
       if (!value)
         throw InputError(source, line_number,
-                         "field '" + std::string(kColumns[c]) + "': expected a number, got '" +
-                             std::string(fields[column_index[c]]) + "'");
+                         "field '" + std::string(kColumns[c]) + "': expected a number, got " +
+                             quote_user_text(fields[column_index[c]]));
       if (!std::isfinite(*value))
         throw InputError(source, line_number, "field '" + std::string(kColumns[c]) + "': value is not finite");
       values[c] = *value;
     }
     if (!(values[2] > 0.0))
-      throw InputError(source, line_number, "field 'A_per_m': must be positive, got " + std::string(fields[column_index[2]]));
+      throw InputError(source, line_number, "field 'A_per_m': must be positive, got " + quote_user_text(fields[column_index[2]]));
     if (!gap.y_m.empty() && !(values[0] > gap.y_m.back()))
       throw InputError(source, line_number, "field 'y_m': strips must be strictly increasing in y");
     gap.y_m.push_back(values[0]);

@@ -3,21 +3,26 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <memory>
 
-#include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/contact/error.hpp"
+#include "ctab/io/text_input.hpp"
+#include "ctab/profiles/builtin_profiles.hpp"
+#include "ctab/profiles/rail_cant.hpp"
 #include "ctab/profiles/smoothing_spline.hpp"
+#include "profile_plausibility.hpp"
 
 namespace ctab::gen {
 
 namespace {
 
 struct RawPoint {
-  double y, z;
-  std::size_t line;
+  double y, z;               // canonical, [m] once converted
+  std::size_t line;          // source line
+  double file_y, file_z;     // the numbers as written in the file (for messages)
 };
 
 std::string lower(std::string s) {
@@ -65,10 +70,12 @@ RawPoint parse_point(const std::vector<std::string>& fields, std::size_t column_
   if (fields.size() <= std::max(column_y, column_z))
     throw InputError(path, line, "expected a point with at least " + std::to_string(std::max(column_y, column_z) + 1) +
                                      " numbers, got " + std::to_string(fields.size()));
-  RawPoint p{0, 0, line};
+  RawPoint p{0, 0, line, 0, 0};
   if (!parse_double(fields[column_y], p.y) || !parse_double(fields[column_z], p.z))
-    throw InputError(path, line, "expected numeric coordinates, got '" + fields[column_y] + " " + fields[column_z] + "'");
+    throw InputError(path, line, "expected numeric coordinates, got " + quote_user_text(fields[column_y] + " " + fields[column_z]));
   if (!std::isfinite(p.y) || !std::isfinite(p.z)) throw InputError(path, line, "non-finite coordinate");
+  p.file_y = p.y;
+  p.file_z = p.z;
   return p;
 }
 
@@ -76,18 +83,54 @@ struct Parsed {
   std::vector<RawPoint> points;  // in metres
   bool mirror_y = false, mirror_z = false, invert = false;
   std::optional<bool> default_mirror_y;
-  double shift_y = 0.0;  // applied after mirroring [m]
+  double shift_y = 0.0;          // applied after mirroring [m]
+  bool scaled_by_file = false;   // the file sets its own unit (Simpack units.len.f): check the profile's size
 };
 
-Parsed read_simpack(std::ifstream& in, const std::string& path) {
+bool starts_comment(const std::string& t) { return t.front() == '#' || t.front() == '!' || t.front() == '%'; }
+
+// The last two data rows of a file, for the cut-short check.
+struct RowHistory {
+  std::vector<std::string> last, previous;
+  std::size_t last_line = 0, previous_line = 0;
+  void add(const std::vector<std::string>& fields, std::size_t line) {
+    previous = std::move(last);
+    previous_line = last_line;
+    last = fields;
+    last_line = line;
+  }
+};
+
+// How a number is written: with or without an exponent, and the digits after the decimal point.
+std::pair<bool, std::size_t> number_shape(const std::string& field) {
+  const auto exponent = field.find_first_of("eE");
+  const std::string mantissa = field.substr(0, exponent);
+  const auto point = mantissa.find('.');
+  return {exponent != std::string::npos, point == std::string::npos ? 0 : mantissa.size() - point - 1};
+}
+
+// A file that ends inside its last data row (no final newline) may have been cut there, which leaves a number
+// that still parses ("3.66" from "3.6653225E+01"): that row's numbers must be written like the row before.
+void check_last_row_complete(const std::string& path, const LineReader& reader, const RowHistory& rows) {
+  if (!reader.unterminated() || rows.last_line != reader.line() || rows.previous_line == 0) return;
+  for (std::size_t f = 0; f < rows.last.size() && f < rows.previous.size(); ++f)
+    if (number_shape(rows.last[f]) != number_shape(rows.previous[f]))
+      throw InputError(path, rows.last_line,
+                       "the last point looks cut short: " + quote_user_text(rows.last[f]) + " is not written like " +
+                           quote_user_text(rows.previous[f]) + " on line " + std::to_string(rows.previous_line) +
+                           " and the file ends without a newline (truncated file?)");
+}
+
+Parsed read_simpack(std::istream& in, const std::string& path) {
   Parsed parsed;
+  parsed.scaled_by_file = true;
   std::map<std::string, double> keys;
   bool header = false, spline = false, points = false, ended = false;
   std::string text;
-  std::size_t line = 0;
+  LineReader reader(in);
   std::vector<RawPoint> raw;
-  while (std::getline(in, text)) {
-    ++line;
+  while (reader.next(text)) {
+    const std::size_t line = reader.line();
     std::string t = trim(text.substr(0, text.find_first_of("!%")));
     if (t.empty()) continue;
     const std::string key = lower(t);
@@ -102,7 +145,7 @@ Parsed read_simpack(std::ifstream& in, const std::string& path) {
     }
   }
   if (!header || !spline) throw InputError(path, 0, "missing Simpack header.begin/spline.begin block");
-  if (!ended) throw InputError(path, line, "missing point.begin ... point.end block");
+  if (!ended) throw InputError(path, reader.line(), "missing point.begin ... point.end block");
   auto get = [&](const char* name, double fallback) { return keys.count(name) ? keys[name] : fallback; };
   if (std::abs(get("rotate", 0.0)) > 1e-12) throw InputError(path, 0, "Simpack 'rotate' is not supported (must be 0)");
   const double per_metre = get("units.len.f", 1.0);
@@ -118,7 +161,7 @@ Parsed read_simpack(std::ifstream& in, const std::string& path) {
     if (!parsed.points.empty() && min_distance > 0.0 &&
         std::hypot(p.y / per_metre - parsed.points.back().y, p.z / per_metre - parsed.points.back().z) < min_distance / per_metre)
       continue;
-    parsed.points.push_back({p.y / per_metre, p.z / per_metre, p.line});
+    parsed.points.push_back({p.y / per_metre, p.z / per_metre, p.line, p.file_y, p.file_z});
   }
   parsed.mirror_y = get("mirror.y", 0.0) != 0.0;
   parsed.mirror_z = get("mirror.z", 0.0) != 0.0;
@@ -126,56 +169,90 @@ Parsed read_simpack(std::ifstream& in, const std::string& path) {
   return parsed;
 }
 
-Parsed read_miniprof(std::ifstream& in, const std::string& path, const std::string& extension, double unit) {
+// MiniProf header values checked against the data: XYPoints (rows) and ColumnDef (numbers per row).
+struct MiniProfDeclared {
+  std::optional<std::size_t> points;
+  std::size_t points_line = 0;
+  std::size_t columns = 0;  // 0: no ColumnDef
+  std::size_t columns_line = 0;
+};
+
+Parsed read_miniprof(std::istream& in, const std::string& path, const std::string& extension, double unit) {
   Parsed parsed;
-  std::size_t column_y = 0, column_z = 1;
+  std::size_t column_y = 0, column_z = 1, rows = 0;
+  MiniProfDeclared declared;
+  RowHistory history;
   bool in_header = true, saw_header = false;
   std::string text;
-  std::size_t line = 0;
-  while (std::getline(in, text)) {
-    ++line;
+  LineReader reader(in);
+  while (reader.next(text)) {
+    const std::size_t line = reader.line();
     const std::string t = trim(text);
     if (in_header) {
       if (t.empty()) {
         if (saw_header) in_header = false;
         continue;
       }
-      if (t.front() == '#' || t.front() == '!' || t.front() == '"' || t.front() == '%') continue;
+      if (starts_comment(t) || t.front() == '"') continue;
       const auto eq = t.find('=');
       if (eq == std::string::npos) {
         if (!saw_header) throw InputError(path, line, "expected a MiniProf 'Key=Value' header before the points");
         in_header = false;  // data without the blank separator line
       } else {
         saw_header = true;
-        if (lower(trim(t.substr(0, eq))) == "columndef") {
-          const auto columns = split_numbers(lower(t.substr(eq + 1)));
+        const std::string key = lower(trim(t.substr(0, eq))), value = trim(t.substr(eq + 1));
+        if (key == "columndef") {
+          const auto columns = split_numbers(lower(value));
           const auto x = std::find(columns.begin(), columns.end(), "x"), y = std::find(columns.begin(), columns.end(), "y");
           if (x == columns.end() || y == columns.end()) throw InputError(path, line, "ColumnDef must name X and Y");
           column_y = static_cast<std::size_t>(x - columns.begin());
           column_z = static_cast<std::size_t>(y - columns.begin());
+          declared.columns = columns.size();
+          declared.columns_line = line;
+        } else if (key == "xypoints" && !value.empty()) {
+          double count = -1.0;
+          if (!parse_double(value, count) || !(count >= 0.0 && count < 1e9 && count == std::floor(count)))
+            throw InputError(path, line, "XYPoints: expected a whole number of points, got " + quote_user_text(value));
+          declared.points = static_cast<std::size_t>(count);
+          declared.points_line = line;
         }
         continue;
       }
     }
-    if (t.empty() || t.front() == '#' || t.front() == '!' || t.front() == '"' || t.front() == '%') continue;
-    RawPoint p = parse_point(split_numbers(t), column_y, column_z, path, line);
-    parsed.points.push_back({p.y * unit, p.z * unit, line});
+    if (t.empty() || starts_comment(t)) continue;
+    // A row starting with '"' is a point MiniProf marked: it counts towards XYPoints but is not used.
+    const bool marked = t.front() == '"';
+    const auto fields = split_numbers(marked ? t.substr(1) : t);
+    double probe = 0.0;
+    if (marked && (fields.empty() || !parse_double(fields[0], probe))) continue;  // a quoted remark
+    if (declared.columns > 0 && fields.size() != declared.columns)
+      throw InputError(path, line, "expected " + std::to_string(declared.columns) + " numbers per point (ColumnDef on line " +
+                                       std::to_string(declared.columns_line) + "), found " + std::to_string(fields.size()));
+    const RawPoint p = parse_point(fields, column_y, column_z, path, line);
+    ++rows;
+    history.add(fields, line);
+    if (!marked) parsed.points.push_back({p.y * unit, p.z * unit, line, p.y, p.z});
   }
   if (!saw_header) throw InputError(path, 0, "missing MiniProf header (Key=Value lines and an empty line)");
+  if (declared.points && rows != *declared.points)
+    throw InputError(path, reader.line(), "expected " + std::to_string(*declared.points) + " points (XYPoints on line " +
+                                              std::to_string(declared.points_line) + "), found " + std::to_string(rows));
+  check_last_row_complete(path, reader, history);
   if (extension == "whl") parsed.shift_y = -70.0e-3;  // X from the flange back: S = X - 70 mm
   if (extension == "ban") parsed.default_mirror_y = true;
   return parsed;
 }
 
-Parsed read_columns(std::ifstream& in, const std::string& path, double unit) {
+Parsed read_columns(std::istream& in, const std::string& path, double unit) {
   Parsed parsed;
+  RowHistory history;
   std::string text;
-  std::size_t line = 0;
+  LineReader reader(in);
   bool first = true;
-  while (std::getline(in, text)) {
-    ++line;
+  while (reader.next(text)) {
+    const std::size_t line = reader.line();
     const std::string t = trim(text);
-    if (t.empty() || t.front() == '#' || t.front() == '!' || t.front() == '%') continue;
+    if (t.empty() || starts_comment(t)) continue;
     const auto fields = split_numbers(t);
     double probe = 0.0;
     if (first && fields.size() >= 2 && !parse_double(fields[0], probe) && !parse_double(fields[1], probe)) {
@@ -185,8 +262,10 @@ Parsed read_columns(std::ifstream& in, const std::string& path, double unit) {
     first = false;
     if (fields.size() != 2) throw InputError(path, line, "expected 2 columns 'y z', got " + std::to_string(fields.size()));
     const RawPoint p = parse_point(fields, 0, 1, path, line);
-    parsed.points.push_back({p.y * unit, p.z * unit, line});
+    history.add(fields, line);
+    parsed.points.push_back({p.y * unit, p.z * unit, line, p.y, p.z});
   }
+  check_last_row_complete(path, reader, history);
   return parsed;
 }
 
@@ -195,6 +274,31 @@ std::shared_ptr<const ProfileCurve> reorigin_at_highest_point(std::shared_ptr<co
   const ProfileTable provisional(*curve, kProfileTableStep_m, name);
   const auto [y, z] = provisional.highest_point();
   return std::make_shared<TransformedCurve>(std::move(curve), 0.0, -y, -z);
+}
+
+std::string duplicate_point_message(const RawPoint& a, const RawPoint& b) {
+  char text[200];
+  std::snprintf(text, sizeof text, "duplicate point at line %zu (y = %.9g, z = %.9g as in the file; the same as line %zu): remove it",
+                std::max(a.line, b.line), b.file_y, b.file_z, std::min(a.line, b.line));
+  return text;
+}
+
+// A rail file that is already inclined must not be inclined again (rail_cant.hpp). The limit is half the
+// requested inclination, at most 1/80 (half of the smallest standard inclination 1:40), so that a 1:40 file
+// is caught under 1:20 as well.
+void check_not_inclined_twice(const ProfilePoints& points, double inclination, const std::string& path) {
+  if (!(inclination > 0.0)) return;
+  const auto measured = measure_head_cant(points.y_m, points.z_m);
+  const double limit = 0.5 * std::min(inclination, 1.0 / 40.0);
+  if (!measured || measured->cant <= limit) return;
+  const double combined = std::tan(std::atan(measured->cant) + std::atan(inclination));
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "the rail head is already canted: measured cant %.4f (1:%.1f; the limit is %.4f), and inclining it by "
+                "1:%.0f would give 1:%.1f. For a rail file that is already inclined pass --inclination 0 "
+                "(inclination = \"0\" in a config)",
+                measured->cant, 1.0 / measured->cant, limit, 1.0 / inclination, 1.0 / combined);
+  throw InputError(path, 0, text);
 }
 
 }  // namespace
@@ -241,10 +345,11 @@ ProfilePoints read_profile_points(const std::string& path, ProfileRole role, con
   while (points.size() > 10 && steep(points[points.size() - 2], points.back())) points.pop_back();
   double length = 0.0;
   for (std::size_t i = 1; i < points.size(); ++i) {
-    if (!(points[i].y > points[i - 1].y))
-      throw InputError(path, points[i].line,
-                       "profile steps backwards in y (a loop or overhang); points must be ordered along the profile");
-    length += std::hypot(points[i].y - points[i - 1].y, points[i].z - points[i - 1].z);
+    const RawPoint &a = points[i - 1], &b = points[i];
+    if (a.y == b.y && a.z == b.z) throw InputError(path, std::max(a.line, b.line), duplicate_point_message(a, b));
+    if (!(b.y > a.y))
+      throw InputError(path, b.line, "profile steps backwards in y (a loop or overhang); points must be ordered along the profile");
+    length += std::hypot(b.y - a.y, b.z - a.z);
   }
   if (length < 5e-3 || length > 0.5)
     throw InputError(path, 0, "profile length " + std::to_string(length * 1e3) +
@@ -255,6 +360,8 @@ ProfilePoints read_profile_points(const std::string& path, ProfileRole role, con
     out.z_m.push_back(p.z);
     out.line.push_back(p.line);
   }
+  if (parsed.scaled_by_file)
+    if (const auto problem = detail::implausible_size(out.y_m, out.z_m, role)) throw InputError(path, 0, *problem);
   return out;
 }
 
@@ -270,7 +377,7 @@ double parse_inclination(const std::string& text, const std::string& source, std
       value = numerator / denominator;
   }
   if (!(std::isfinite(value) && value >= 0.0 && value < 0.2))
-    throw InputError(source, line, (what.empty() ? "" : what + ": ") + "expected a ratio such as 1/40 or a number in [0, 0.2), got '" + text + "'");
+    throw InputError(source, line, (what.empty() ? "" : what + ": ") + "expected a ratio such as 1/40 or a number in [0, 0.2), got " + quote_user_text(text));
   return value;
 }
 
@@ -284,6 +391,7 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
     return ProfileTable(*uic60_inclined_curve(options.inclination), kProfileTableStep_m, "UIC60");
   }
   const ProfilePoints points = read_profile_points(spec, role, options);
+  if (role == ProfileRole::Rail) check_not_inclined_twice(points, options.inclination, spec);
   curve = std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, options.smoothing_length_m);
   if (role == ProfileRole::Rail) {
     if (options.inclination != 0.0) curve = std::make_shared<TransformedCurve>(curve, -std::atan(options.inclination), 0.0, 0.0);

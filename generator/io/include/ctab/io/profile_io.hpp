@@ -6,17 +6,23 @@
 //! - Simpack `.prw` / `.prr`: header and spline blocks; honours mirror.y, mirror.z, inversion, shift.y/z,
 //!   bound.y/z, point.dist.min and units.len.f (user length units per metre); `rotate` must be 0.
 //! - MiniProf `.whl` / `.ban`: `Key=Value` header up to the first empty line, `ColumnDef=X,Y[,...]`, comment
-//!   lines starting with ! " % #. Units mm. `.whl`: X from the flange back, so S = X - 70 mm. `.ban`: mirrored
-//!   in y by default (MiniProf's X runs the other way), z auto-detected.
+//!   lines starting with ! " % #; data rows starting with " are marked points (counted in XYPoints, not used).
+//!   Units mm. `.whl`: X from the flange back, so S = X - 70 mm. `.ban`: mirrored in y by default (MiniProf's X
+//!   runs the other way), z auto-detected.
 //! - anything else: two columns `y z` (comma, semicolon or white space; one optional header line), units mm
 //!   unless `length_unit_m` says otherwise.
 //! Options may mirror y or z on top of the file's own settings; z (and a wheel's y) are auto-detected when
 //! not given: a rail's ends lie below its top, a wheel's flange tip (largest z) at y < 0.
 //! Point data are smoothed by the arc-length smoothing spline (smoothing_spline.hpp) with a smoothing length
 //! of 1 mm by default. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
-//! the highest point of the head.
+//! the highest point of the head. A rail file whose head is already canted (rail_cant.hpp) by more than half the
+//! inclination to be applied (at most 1/80) is an error: it would be inclined twice.
 //! Errors (InputError) name the file, the line and what was expected: missing header block, non-numeric point,
-//! fewer than 10 points, backward steps (loops), non-finite values, implausible total length (units).
+//! fewer than 10 points, duplicate points, backward steps (loops), non-finite values, implausible total length
+//! (units); MiniProf rows other than XYPoints declares or with other than ColumnDef's numbers; a last row cut
+//! short (file ends without a newline inside a number written unlike the row before); Simpack profiles whose
+//! size cannot be a wheel or rail (units.len.f, profile_plausibility.hpp). A UTF-8 byte-order mark is skipped;
+//! text echoed in messages is cut at 60 characters (text_input.hpp).
 #include <optional>
 #include <string>
 #include <vector>
