@@ -76,7 +76,7 @@ TEST(Cli, GenerateAndInspect) {
   EXPECT_NE(generated.output.find("5 lateral shifts x 1 vertical_load_N x 2 wheels"), std::string::npos) << generated.output;
   const CtabRun inspected = run_ctab("inspect " + table);
   ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
-  for (const char* text : {"schema version 1 (valid)", "git_commit", "wheel_profile_sha256", "lateral_displacement_m 5 values",
+  for (const char* text : {"schema version 2 (valid)", "git_commit", "wheel_profile_sha256", "lateral_displacement_m 5 values",
                            "status counts (case x wheel): converged 10", "mode                   wheel"})
     EXPECT_NE(inspected.output.find(text), std::string::npos) << text << "\n" << inspected.output;
   // Bad inputs: clear one-line errors, non-zero exit, and the old table stays.

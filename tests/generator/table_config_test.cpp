@@ -78,6 +78,6 @@ TEST(TableConfig, ExampleConfigsGenerate) {
       c.lateral_displacement_m.resize(21);
     }
     const ctab::tables::Table t = generate_table(c, GeneratorInfo{});
-    for (const auto status : t.status) EXPECT_GE(status, 0) << name;
+    for (const auto status : t.status) EXPECT_GE(static_cast<int>(status), 0) << name;
   }
 }
