@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <map>
 #include <sstream>
 
 #include "ctab/io/profile_io.hpp"
@@ -105,17 +104,17 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
             ->check(finite_positive("m", 2.0)));
   }
   if (groups & kMode) {
-    const std::map<std::string, gen::ContactMode> modes = {{"wheelset", gen::ContactMode::Wheelset},
-                                                           {"wheel", gen::ContactMode::SingleWheel}};
-    add(app.add_option("--mode", c.mode, "wheelset (rigid roll, both wheels touching) or wheel (single wheel, roll 0)")
-            ->transform(CLI::CheckedTransformer(modes))
+    add(app.add_option_function<std::string>(
+               "--mode", [&c](const std::string& mode) { c.mode = mode == "wheel" ? gen::ContactMode::SingleWheel : gen::ContactMode::Wheelset; },
+               "wheelset (rigid roll, both wheels touching) or wheel (single wheel, roll 0)")
+            ->check(CLI::IsMember({"wheelset", "wheel"}))
             ->default_str(c.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"));
   }
   if (groups & kSolver) {
-    const std::map<std::string, gen::NormalMethod> methods = {{"mim1d", gen::NormalMethod::Mim1d},
-                                                              {"hertz", gen::NormalMethod::Hertz}};
-    add(app.add_option("--method", c.method, "normal-contact method")
-            ->transform(CLI::CheckedTransformer(methods))
+    add(app.add_option_function<std::string>(
+               "--method", [&c](const std::string& method) { c.method = method == "hertz" ? gen::NormalMethod::Hertz : gen::NormalMethod::Mim1d; },
+               "normal-contact method")
+            ->check(CLI::IsMember({"mim1d", "hertz"}))
             ->default_str(c.method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"));
     add(app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
             ->capture_default_str()

@@ -136,7 +136,8 @@ Command add_solve_command(CLI::App& parent) {
       "solve", "Solve one normal-contact problem: a gap profile, a wheel-rail case, or one case of a table config");
   CLI::Option* gap = app->add_option("--gap", o->gap_path, "CSV with columns y_m,h_m,A_per_m,B_per_m");
   CLI::Option* config = app->add_option("--config", o->config_path,
-                                        "table config (TOML): solve its case at --dy [and --load] as `generate` does");
+                                        "table config (TOML): solve its case at --dy [and --load] as `generate` does "
+                                        "(no set-up options with it)");
   const auto load_check = finite_range(0.0, 1e8, "(N; m for an approach_m config)");
   CLI::Option* approach = app->add_option("--approach", o->approach_m, "prescribed approach [m] (wheel-rail: vertical)")
                               ->check(finite_range(0.0, kMaxApproach_m, "m"));
@@ -157,11 +158,15 @@ Command add_solve_command(CLI::App& parent) {
                       ->capture_default_str()
                       ->check(CLI::IsMember({"newton", "fixed-point"})));
   for (CLI::Option* other : {gap, approach, normal, vertical}) setup.push_back(other);
-  for (CLI::Option* other : setup) config->excludes(other);
+  for (const char* alias : {"--E", "--nu"}) setup.push_back(app->get_option(alias));
   app->add_flag("--json", o->json, "print one JSON object");
-  app->callback([app, o] {
-    for (const char* alias : {"--E", "--nu"})
-      if (app->count(alias) > 0 && app->count("--config") > 0) throw CLI::ExcludesError("--config", alias);
+  // --config excludes the set-up options (checked here rather than with CLI11's excludes, which clutters --help).
+  app->callback([app, o, config, setup] {
+    for (const CLI::Option* other : setup)
+      if (config->count() > 0 && other->count() > 0) {
+        const std::string name = other->get_name().empty() ? "--" + other->get_single_name() : other->get_name();
+        throw CLI::ExcludesError("--config", name);  // hidden aliases have no name in CLI11's messages
+      }
     o->wheelrail_given = app->count("--wheel") + app->count("--rail") + app->count("--dy") + app->count("--config") > 0;
   });
   return {app, [o] { return run_solve(*o); }};
