@@ -126,9 +126,13 @@ Command add_bench_command(CLI::App& parent) {
   auto seconds = std::make_shared<double>(1.0);
   const CLI::Validator seconds_check = finite_positive("s", 3600.0);
   CLI::App* solver = app->add_subcommand("solver", "MIM-1D on the Hertz case at strip widths 0.2, 0.08, 0.04 mm");
-  solver->add_option("--seconds", *seconds, "measuring time per width [s]")->capture_default_str()->check(seconds_check);
+  solver->add_option("--seconds", *seconds, "measuring time per width [s]")
+      ->capture_default_str()
+      ->check(seconds_check);
   CLI::App* wheelrail = app->add_subcommand("wheelrail", "Geometry plus MIM-1D per wheel-rail case (the CONTACT cases)");
-  wheelrail->add_option("--seconds", *seconds, "measuring time per case [s]")->capture_default_str()->check(seconds_check);
+  wheelrail->add_option("--seconds", *seconds, "measuring time per case [s]")
+      ->capture_default_str()
+      ->check(seconds_check);
   auto repetitions = std::make_shared<int>(5);
   CLI::App* generate = app->add_subcommand("generate", "The default table at 1 and 2 threads: time, parallel efficiency, file size");
   generate->add_option("--repetitions", *repetitions, "runs per thread count")

@@ -6,10 +6,10 @@ namespace ctab::cli {
 
 enum ExitCode : int {
   kExitSuccess = 0,
-  kExitInternal = 1,     //!< an unexpected internal error (a bug)
-  kExitUsage = 2,        //!< bad usage or input: options, config, profile or gap files (ParseError, InputError)
-  kExitIo = 3,           //!< I/O failure: the output cannot be written, standard output fails
-  kExitCaseFailed = 4,   //!< a solve, or some cases of a written table, did not succeed (statuses say why)
+  kExitInternal = 1,    //!< an unexpected internal error (a bug)
+  kExitUsage = 2,       //!< bad usage or input: options, config, profile or gap files (ParseError, InputError)
+  kExitIo = 3,          //!< I/O failure: the output cannot be written, standard output fails
+  kExitCaseFailed = 4,  //!< a solve, or some cases of a written table, did not succeed (statuses say why)
 };
 
 //! Output cannot be written (exit code 3).

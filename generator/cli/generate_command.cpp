@@ -16,7 +16,6 @@
 #include "setup_options.hpp"
 #include "version.hpp"
 
-
 namespace ctab::cli {
 
 namespace {
@@ -75,7 +74,8 @@ bool report_failed_cases(const std::map<int, std::size_t>& counts, const std::st
              std::to_string(count);
   }
   if (failed > 0)
-    std::fprintf(stderr, "ctab generate: %zu of %zu wheel cases failed (%s); %s is written, its status dataset says which\n",
+    std::fprintf(stderr,
+                 "ctab generate: %zu of %zu wheel cases failed (%s); %s is written, its status dataset says which\n",
                  failed, total, names.c_str(), output.c_str());
   return failed > 0;
 }
@@ -113,8 +113,9 @@ int run_generate(const GenerateOptions& o) {
 Command add_generate_command(CLI::App& parent) {
   auto o = std::make_shared<GenerateOptions>();
   CLI::App* app = parent.add_subcommand("generate", "Generate a contact table (HDF5) from a TOML config or the embedded default");
-  app->add_option("config", o->config_path, "TOML config (default: `ctab config --print-default`: S1002 on UIC60 1:40, "
-                                            "wheelset, -12..12 mm, 78.5 kN)");
+  app->add_option("config", o->config_path,
+                  "TOML config (default: `ctab config --print-default`: S1002 on UIC60 1:40, "
+                  "wheelset, -12..12 mm, 78.5 kN)");
   app->add_option("-o,--output", o->output, "output table; replaced only on success, and only if it is a table")
       ->capture_default_str();
   app->add_flag("--force", o->force, "replace OUTPUT even if it is not an HDF5 table (a symlink, FIFO, other file)");

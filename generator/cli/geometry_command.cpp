@@ -15,9 +15,9 @@ namespace ctab::cli {
 
 namespace {
 
-constexpr std::size_t kMaxRows = 1000000;            // at most 10^6 shifts
-constexpr double kMaxConicityAmplitude_m = 20e-3;    // EN 15302 amplitudes are a few mm
-constexpr double kConicityStep_m = 0.01e-3;          // fine sweep of the equivalent conicity
+constexpr std::size_t kMaxRows = 1000000;          // at most 10^6 shifts
+constexpr double kMaxConicityAmplitude_m = 20e-3;  // EN 15302 amplitudes are a few mm
+constexpr double kConicityStep_m = 0.01e-3;        // fine sweep of the equivalent conicity
 
 struct GeometryOptions {
   gen::TableConfig setup = default_table_config();
@@ -29,7 +29,8 @@ std::size_t row_count(const GeometryOptions& o) {
   if (o.dy_max_m < o.dy_min_m) throw gen::InputError("--dy-max", 0, "must not be below --dy-min (empty range)");
   const double steps = std::floor((o.dy_max_m - o.dy_min_m) / o.dy_step_m + 1e-9);
   if (!(steps < static_cast<double>(kMaxRows)))
-    throw gen::InputError("--dy-step", 0, "gives more than 10^6 shifts between --dy-min and --dy-max; use a larger step");
+    throw gen::InputError("--dy-step", 0,
+                          "gives more than 10^6 shifts between --dy-min and --dy-max; use a larger step");
   return static_cast<std::size_t>(steps) + 1;
 }
 
@@ -56,8 +57,9 @@ int run_geometry(GeometryOptions o) {
     std::printf("# contact jump (%s wheel) between dy = %.2f and %.2f mm: wheel y %.2f -> %.2f mm\n",
                 jump.right_side ? "right" : "left", jump.dy_before_m * 1e3, jump.dy_after_m * 1e3,
                 jump.y_wheel_before_m * 1e3, jump.y_wheel_after_m * 1e3);
-  std::printf("dy_m,roll_rad,right_y_wheel_m,right_y_rail_m,right_contact_angle_rad,right_rolling_radius_m,"
-              "left_y_wheel_m,left_y_rail_m,left_contact_angle_rad,left_rolling_radius_m,rolling_radius_difference_m\n");
+  std::printf(
+      "dy_m,roll_rad,right_y_wheel_m,right_y_rail_m,right_contact_angle_rad,right_rolling_radius_m,"
+      "left_y_wheel_m,left_y_rail_m,left_contact_angle_rad,left_rolling_radius_m,rolling_radius_difference_m\n");
   for (const auto& r : rows)
     std::printf("%.6e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", r.dy_m, r.roll_rad, r.right.wheel_s_m,
                 r.right.rail_y_m, r.right.contact_angle_rad, r.right.rolling_radius_m, r.left.wheel_s_m,
@@ -69,11 +71,18 @@ int run_geometry(GeometryOptions o) {
 
 Command add_geometry_command(CLI::App& parent) {
   auto o = std::make_shared<GeometryOptions>();
-  CLI::App* app = parent.add_subcommand("geometry", "Rigid contact geometry versus lateral shift (CSV), jumps, equivalent conicity");
+  CLI::App* app = parent.add_subcommand(
+      "geometry", "Rigid contact geometry versus lateral shift (CSV), jumps, equivalent conicity");
   add_setup_options(*app, o->setup, kProfiles | kTrack | kMode);
-  app->add_option("--dy-min", o->dy_min_m, "first lateral shift [m]")->capture_default_str()->check(finite_range(-1.0, 1.0, "m"));
-  app->add_option("--dy-max", o->dy_max_m, "last lateral shift [m]")->capture_default_str()->check(finite_range(-1.0, 1.0, "m"));
-  app->add_option("--dy-step", o->dy_step_m, "step [m] (at most 10^6 shifts)")->capture_default_str()->check(finite_positive("m"));
+  app->add_option("--dy-min", o->dy_min_m, "first lateral shift [m]")
+      ->capture_default_str()
+      ->check(finite_range(-1.0, 1.0, "m"));
+  app->add_option("--dy-max", o->dy_max_m, "last lateral shift [m]")
+      ->capture_default_str()
+      ->check(finite_range(-1.0, 1.0, "m"));
+  app->add_option("--dy-step", o->dy_step_m, "step [m] (at most 10^6 shifts)")
+      ->capture_default_str()
+      ->check(finite_positive("m"));
   app->add_option("--conicity-amplitude", o->conicity_amplitude_m, "amplitude of the equivalent conicity [m]")
       ->capture_default_str()
       ->check(finite_positive("m", kMaxConicityAmplitude_m));

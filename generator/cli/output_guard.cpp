@@ -35,8 +35,7 @@ void check_directory(const std::string& output) {
     throw IoError(output + ": the output directory " + directory.string() + " does not exist");
   const std::string probe = temporary_table_path(output);
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw IoError(output + ": cannot create a file in " + directory.string() + ": " + std::strerror(errno));
+  if (fd < 0) throw IoError(output + ": cannot create a file in " + directory.string() + ": " + std::strerror(errno));
   ::close(fd);
   ::unlink(probe.c_str());
 }

@@ -40,7 +40,8 @@ CLI::Validator number_check(const NumberRule& rule) {
 
 // A hidden alias of `main` (kept for earlier scripts). Hidden CLI11 options have no name in CLI11's messages, so
 // the alias checks its value itself and names itself in errors.
-void add_hidden_alias(CLI::App& app, const std::string& alias, CLI::Option* main, double& target, const NumberRule& rule) {
+void add_hidden_alias(CLI::App& app, const std::string& alias, CLI::Option* main, double& target,
+                      const NumberRule& rule) {
   app.add_option_function<std::string>(
          alias,
          [alias, main, &target, rule](const std::string& text) {
@@ -86,16 +87,20 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
   if (groups & kProfiles) {
     add(app.add_option("--wheel", c.wheel, "wheel profile: S1002 (built in) or a file (.prw, .whl, 2-column y z in mm)")
             ->capture_default_str());
-    add(app.add_option("--rail", c.rail, "rail profile: UIC60 (built-in 60E1) or a file (.prr, .ban, 2-column y z in mm)")
+    add(app.add_option("--rail", c.rail,
+                       "rail profile: UIC60 (built-in 60E1) or a file (.prr, .ban, 2-column y z in mm)")
             ->capture_default_str());
-    add(app.add_option("--inclination", c.inclination_text, "rail inclination: 1/40, 1/30, 1/20 or 0 (already inclined)")
+    add(app.add_option("--inclination", c.inclination_text,
+                       "rail inclination: 1/40, 1/30, 1/20 or 0 (already inclined)")
             ->capture_default_str());
     add(app.add_option("--smoothing", c.smoothing_length_m, "smoothing length of point profiles [m] (0 interpolates)")
             ->capture_default_str()
             ->check(finite_range(0.0, 0.05, "m")));
   }
   if (groups & kTrack) {
-    add(app.add_option("--gauge", c.track.gauge_m, "track gauge [m]")->capture_default_str()->check(finite_positive("m", 3.0)));
+    add(app.add_option("--gauge", c.track.gauge_m, "track gauge [m]")
+            ->capture_default_str()
+            ->check(finite_positive("m", 3.0)));
     add(app.add_option("--flange-back-distance", c.track.flange_back_distance_m, "wheelset flange-back distance [m]")
             ->capture_default_str()
             ->check(finite_positive("m", 3.0)));
@@ -105,14 +110,20 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
   }
   if (groups & kMode) {
     add(app.add_option_function<std::string>(
-               "--mode", [&c](const std::string& mode) { c.mode = mode == "wheel" ? gen::ContactMode::SingleWheel : gen::ContactMode::Wheelset; },
+               "--mode",
+               [&c](const std::string& mode) {
+                 c.mode = mode == "wheel" ? gen::ContactMode::SingleWheel : gen::ContactMode::Wheelset;
+               },
                "wheelset (rigid roll, both wheels touching) or wheel (single wheel, roll 0)")
             ->check(CLI::IsMember({"wheelset", "wheel"}))
             ->default_str(c.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"));
   }
   if (groups & kSolver) {
     add(app.add_option_function<std::string>(
-               "--method", [&c](const std::string& method) { c.method = method == "hertz" ? gen::NormalMethod::Hertz : gen::NormalMethod::Mim1d; },
+               "--method",
+               [&c](const std::string& method) {
+                 c.method = method == "hertz" ? gen::NormalMethod::Hertz : gen::NormalMethod::Mim1d;
+               },
                "normal-contact method")
             ->check(CLI::IsMember({"mim1d", "hertz"}))
             ->default_str(c.method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"));
@@ -123,12 +134,14 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
   if (groups & kMaterial) {
     const NumberRule youngs{"a finite Young's modulus > 0 in Pa", [](double v) { return std::isfinite(v) && v > 0.0; }};
     const NumberRule poisson{"a Poisson's ratio in (-1, 0.5]", [](double v) { return v > -1.0 && v <= 0.5; }};
-    CLI::Option* E = add(app.add_option("--youngs-modulus", c.material.youngs_modulus_Pa, "Young's modulus of both bodies [Pa]")
-                             ->capture_default_str()
-                             ->check(number_check(youngs)));
-    CLI::Option* nu = add(app.add_option("--poisson-ratio", c.material.poisson_ratio, "Poisson's ratio of both bodies [-]")
-                              ->capture_default_str()
-                              ->check(number_check(poisson)));
+    CLI::Option* E =
+        add(app.add_option("--youngs-modulus", c.material.youngs_modulus_Pa, "Young's modulus of both bodies [Pa]")
+                ->capture_default_str()
+                ->check(number_check(youngs)));
+    CLI::Option* nu =
+        add(app.add_option("--poisson-ratio", c.material.poisson_ratio, "Poisson's ratio of both bodies [-]")
+                ->capture_default_str()
+                ->check(number_check(poisson)));
     add_hidden_alias(app, "--E", E, c.material.youngs_modulus_Pa, youngs);
     add_hidden_alias(app, "--nu", nu, c.material.poisson_ratio, poisson);
   }

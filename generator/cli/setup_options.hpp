@@ -35,7 +35,8 @@ inline constexpr const char* kCommandLineSource = "command line";
 [[nodiscard]] gen::TableConfig default_table_config(const std::string& source = kCommandLineSource);
 
 //! Registers the options of `groups` on `app`, writing into `config` (whose current values are the defaults shown
-//! in --help). Returns the visible options, e.g. for `excludes` (the hidden aliases --E and --nu are not among them). Values are range-checked at parse time (exit code 2).
+//! in --help). Returns the visible options, e.g. for `excludes` (the hidden aliases --E and --nu are not among them).
+//! Values are range-checked at parse time (exit code 2).
 std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& config, unsigned groups);
 
 //! After parsing: converts the inclination text given on the command line. Throws InputError naming the option.

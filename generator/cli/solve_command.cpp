@@ -65,8 +65,10 @@ int solve_gap(const SolveOptions& o) {
     gen::Mim1dSolver solver(gap, E_star, options);
     solution = o.approach_m ? solver.solve_for_approach(*o.approach_m) : solver.solve_for_load(*o.load);
   }
-  if (o.json) std::cout << gen::to_json(solution).dump(1) << '\n';
-  else print_summary(solution);
+  if (o.json)
+    std::cout << gen::to_json(solution).dump(1) << '\n';
+  else
+    print_summary(solution);
   if (gen::is_success(solution.status)) return kExitSuccess;
   std::fprintf(stderr, "ctab solve: %s, %s %g: %s\n", o.gap_path.c_str(), o.approach_m ? "approach_m" : "load_N",
                o.approach_m ? *o.approach_m : *o.load, gen::status_name(solution.status));
@@ -78,22 +80,28 @@ gen::TableConfig wheelrail_config(const SolveOptions& o, double& load_value) {
   if (!o.config_path.empty()) {
     gen::TableConfig config = gen::read_table_config(o.config_path);
     const char* axis = gen::load_axis_name(config.load_kind);
-    if (o.load) load_value = *o.load;
-    else if (config.load_values.size() == 1) load_value = config.load_values.front();
+    if (o.load)
+      load_value = *o.load;
+    else if (config.load_values.size() == 1)
+      load_value = config.load_values.front();
     else
-      throw gen::InputError("--load", 0, o.config_path + " has a " + axis + " axis of " +
-                                             std::to_string(config.load_values.size()) + " values: give --load VALUE");
+      throw gen::InputError("--load", 0,
+                            o.config_path + " has a " + axis + " axis of " + std::to_string(config.load_values.size()) +
+                                " values: give --load VALUE");
     if (config.load_kind == gen::LoadKind::Approach && load_value > kMaxApproach_m)
       throw gen::InputError("--load", 0, std::string("expected an approach in [0, 0.01] m (") + axis + " config)");
     return config;
   }
-  if (o.load) throw gen::InputError("--load", 0, "wheel-rail cases take --normal-load, --vertical-load or --approach "
-                                                 "(or --load with --config)");
+  if (o.load)
+    throw gen::InputError("--load", 0,
+                          "wheel-rail cases take --normal-load, --vertical-load or --approach "
+                          "(or --load with --config)");
   const int loads = o.approach_m.has_value() + o.normal_load_N.has_value() + o.vertical_load_N.has_value();
-  if (loads != 1) throw gen::InputError("solve", 0, "give exactly one of --normal-load N, --vertical-load N or --approach METRES");
+  if (loads != 1)
+    throw gen::InputError("solve", 0, "give exactly one of --normal-load N, --vertical-load N or --approach METRES");
   gen::TableConfig config = o.setup;
   finish_setup_options(config);
-  config.load_kind = o.approach_m ? gen::LoadKind::Approach
+  config.load_kind = o.approach_m      ? gen::LoadKind::Approach
                      : o.normal_load_N ? gen::LoadKind::NormalForce
                                        : gen::LoadKind::VerticalForce;
   load_value = o.approach_m ? *o.approach_m : o.normal_load_N ? *o.normal_load_N : *o.vertical_load_N;
@@ -108,23 +116,29 @@ int solve_wheelrail(const SolveOptions& o) {
   const bool right = o.side != "left", left = o.side != "right";
   bool roll_converged = true;
   const double roll = case_roll(setup, *o.dy_m, roll_converged);
-  for (const auto& [wanted, wheel, name] : {std::tuple{right, Wheel::Right, "right"}, std::tuple{left, Wheel::Left, "left"}})
+  for (const auto& [wanted, wheel, name] :
+       {std::tuple{right, Wheel::Right, "right"}, std::tuple{left, Wheel::Left, "left"}})
     if (wanted && roll_converged && !wheel_over_rail(setup, wheel, *o.dy_m, roll))
-      throw gen::InputError("--dy", 0, std::string("the ") + name + " wheel is off its rail at dy = " +
-                                           millimetres(*o.dy_m) + " (no wheel point above the rail profile)");
+      throw gen::InputError("--dy", 0,
+                            std::string("the ") + name + " wheel is off its rail at dy = " + millimetres(*o.dy_m) +
+                                " (no wheel point above the rail profile)");
   const TableCase result = solve_table_case(setup, *o.dy_m, load_value, right, left);
-  if (o.json) std::cout << to_json(setup.config(), result, load_value).dump(1) << '\n';
-  else print_summary(setup.config(), result, load_value);
+  if (o.json)
+    std::cout << to_json(setup.config(), result, load_value).dump(1) << '\n';
+  else
+    print_summary(setup.config(), result, load_value);
   return report_failures(setup, result, load_value) ? kExitCaseFailed : kExitSuccess;
 }
 
 int run_solve(const SolveOptions& o) {
   if (!o.gap_path.empty()) {
-    if (o.wheelrail_given) throw gen::InputError("solve", 0, "give either --gap FILE or a wheel-rail case (--dy), not both");
+    if (o.wheelrail_given)
+      throw gen::InputError("solve", 0, "give either --gap FILE or a wheel-rail case (--dy), not both");
     return solve_gap(o);
   }
   if (!o.wheelrail_given)
-    throw gen::InputError("solve", 0, "give --gap FILE, a wheel-rail case (--dy METRES with a load) or --config FILE --dy METRES");
+    throw gen::InputError("solve", 0,
+                          "give --gap FILE, a wheel-rail case (--dy METRES with a load) or --config FILE --dy METRES");
   return solve_wheelrail(o);
 }
 
@@ -143,10 +157,12 @@ Command add_solve_command(CLI::App& parent) {
                               ->check(finite_range(0.0, kMaxApproach_m, "m"));
   app->add_option("--load", o->load, "gap: normal load [N]; with --config: the value on its load axis [N or m]")
       ->check(load_check);
-  CLI::Option* normal = app->add_option("--normal-load", o->normal_load_N, "wheel-rail: total normal force [N]")->check(load_check);
+  CLI::Option* normal =
+      app->add_option("--normal-load", o->normal_load_N, "wheel-rail: total normal force [N]")->check(load_check);
   CLI::Option* vertical =
       app->add_option("--vertical-load", o->vertical_load_N, "wheel-rail: vertical wheel load [N]")->check(load_check);
-  app->add_option("--dy", o->dy_m, "wheel-rail: lateral shift of the wheelset [m], + moves the right flange to its rail")
+  app->add_option("--dy", o->dy_m,
+                  "wheel-rail: lateral shift of the wheelset [m], + moves the right flange to its rail")
       ->check(finite_range(-1.0, 1.0, "m"));
   app->add_option("--side", o->side, "wheel-rail: solve only the right or the left wheel (default: both)")
       ->check(CLI::IsMember({"right", "left"}));

@@ -15,16 +15,18 @@ const char* method_name(gen::NormalMethod method) { return method == gen::Normal
 const char* wheel_name(int w) { return w == 0 ? "right" : "left"; }
 
 void print_wheel(const char* name, const gen::WheelContact& c) {
-  std::printf("%s wheel: %s, vertical approach %.5f mm, normal load %.3f kN, vertical load %.3f kN, %d iterations, "
-              "%.3f ms\n",
-              name, gen::status_name(c.status), c.vertical_approach_m * 1e3, c.normal_force_N * 1e-3,
-              c.vertical_force_N * 1e-3, c.iterations, c.solve_time_s * 1e3);
+  std::printf(
+      "%s wheel: %s, vertical approach %.5f mm, normal load %.3f kN, vertical load %.3f kN, %d iterations, "
+      "%.3f ms\n",
+      name, gen::status_name(c.status), c.vertical_approach_m * 1e3, c.normal_force_N * 1e-3, c.vertical_force_N * 1e-3,
+      c.iterations, c.solve_time_s * 1e3);
   for (const auto& p : c.patches)
-    std::printf("  %s patch: rail y %.3f mm (centre of pressure %.3f), wheel y %.3f mm, angle %.3f deg, radius %.3f "
-                "mm, force %.3f kN, area %.3f mm^2, max pressure %.1f MPa, approach %.5f mm\n",
-                p.zone.c_str(), p.y_rail_m * 1e3, p.y_cop_rail_m * 1e3, p.y_wheel_m * 1e3,
-                p.contact_angle_rad * 180 / std::numbers::pi, p.rolling_radius_m * 1e3, p.normal_force_N * 1e-3,
-                p.area_m2 * 1e6, p.max_pressure_Pa * 1e-6, p.approach_m * 1e3);
+    std::printf(
+        "  %s patch: rail y %.3f mm (centre of pressure %.3f), wheel y %.3f mm, angle %.3f deg, radius %.3f "
+        "mm, force %.3f kN, area %.3f mm^2, max pressure %.1f MPa, approach %.5f mm\n",
+        p.zone.c_str(), p.y_rail_m * 1e3, p.y_cop_rail_m * 1e3, p.y_wheel_m * 1e3,
+        p.contact_angle_rad * 180 / std::numbers::pi, p.rolling_radius_m * 1e3, p.normal_force_N * 1e-3,
+        p.area_m2 * 1e6, p.max_pressure_Pa * 1e-6, p.approach_m * 1e3);
   for (const auto& m : c.near_misses)
     if (m.gap_m < 2e-3)
       std::printf("  near miss: rail y %.3f mm, wheel y %.3f mm, gap %.4f mm\n", m.rail_y_m * 1e3, m.wheel_s_m * 1e3,
@@ -47,9 +49,9 @@ void print_summary(const gen::NormalSolution& s) {
 }
 
 void print_summary(const gen::TableConfig& config, const TableCase& result, double load_value) {
-  std::printf("%s on %s (%s), %s mode, %s, strips %.3f mm: dy %.3f mm, roll %.4f mrad%s, %s %g\n",
-              config.wheel.c_str(), config.rail.c_str(), config.inclination_text.c_str(), mode_name(config.mode),
-              method_name(config.method), config.strip_width_m * 1e3, result.dy_m * 1e3, result.roll_rad * 1e3,
+  std::printf("%s on %s (%s), %s mode, %s, strips %.3f mm: dy %.3f mm, roll %.4f mrad%s, %s %g\n", config.wheel.c_str(),
+              config.rail.c_str(), config.inclination_text.c_str(), mode_name(config.mode), method_name(config.method),
+              config.strip_width_m * 1e3, result.dy_m * 1e3, result.roll_rad * 1e3,
               result.roll_converged ? "" : " (roll iteration failed)", gen::load_axis_name(config.load_kind),
               load_value);
   for (int w = 0; w < 2; ++w)

@@ -12,7 +12,8 @@ namespace ctab::cli {
 namespace {
 
 // Errors of a config file name the file, line and key; errors of command-line options name the option.
-[[noreturn]] void fail(const gen::TableConfig& config, const char* key, const char* option, const std::string& message) {
+[[noreturn]] void fail(const gen::TableConfig& config, const char* key, const char* option,
+                       const std::string& message) {
   if (config.source == kCommandLineSource) throw gen::InputError(option, 0, message);
   throw gen::InputError(config.source, config.key_line(key), std::string("'") + key + "': " + message);
 }
@@ -77,7 +78,8 @@ std::string failure_hint(const CaseSetup& setup, Wheel wheel, const TableCase& r
   std::vector<gen::GapMinimum> minima;
   double first_contact_z = 0.0;
   setup.side().gap_minima(sign * result.dy_m, sign * result.roll_rad, minima, first_contact_z);
-  if (minima.empty() || !wheel_over_rail(setup, wheel, result.dy_m, result.roll_rad)) return "the wheel is off its rail";
+  if (minima.empty() || !wheel_over_rail(setup, wheel, result.dy_m, result.roll_rad))
+    return "the wheel is off its rail";
   constexpr double kNearEnd_m = 1e-3;
   const gen::GapMinimum& first = minima.front();
   const gen::ProfileTable& w = setup.side().wheel();

@@ -26,8 +26,9 @@ std::string fresh_directory(const std::string& name) {
   return directory + "/";
 }
 
-const char* const kSmallConfig = "[solver]\nmode = \"wheel\"\n[axes]\n"
-                                 "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n";
+const char* const kSmallConfig =
+    "[solver]\nmode = \"wheel\"\n[axes]\n"
+    "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n";
 
 bool is_hdf5(const std::string& path) {
   const std::string text = ctab::test::read_text(path);
@@ -90,9 +91,10 @@ TEST(CliOutput, UnwritableOrMissingDirectoryFailsBeforeTheSweep) {
 // SIGINT and SIGTERM during the sweep: exit 128 + signal and remove OUTPUT.tmp-<pid> (here a stand-in created by
 // the test: the real one exists only during the short write).
 TEST(CliOutput, InterruptRemovesTheTemporaryFile) {
-  const std::string config = ctab::test::write_temp(
-      "ctab_output_long.toml", "[axes]\nlateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.01e-3 }\n"
-                               "vertical_load_N = [50e3, 78.5e3, 100e3]\n");
+  const std::string config =
+      ctab::test::write_temp("ctab_output_long.toml",
+                             "[axes]\nlateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.01e-3 }\n"
+                             "vertical_load_N = [50e3, 78.5e3, 100e3]\n");
   for (const int signal_number : {SIGINT, SIGTERM}) {
     const std::string dir = fresh_directory("signal" + std::to_string(signal_number));
     const std::string output = dir + "t.h5", capture = dir + "capture";
@@ -104,7 +106,8 @@ TEST(CliOutput, InterruptRemovesTheTemporaryFile) {
            std::chrono::steady_clock::now() < deadline)
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     const std::string temporary = output + ".tmp-" + std::to_string(pid);
-    ctab::test::write_temp("ctab_output_signal" + std::to_string(signal_number) + "/t.h5.tmp-" + std::to_string(pid), "partial");
+    ctab::test::write_temp("ctab_output_signal" + std::to_string(signal_number) + "/t.h5.tmp-" + std::to_string(pid),
+                           "partial");
     ASSERT_TRUE(fs::exists(temporary));
     ASSERT_EQ(kill(pid, signal_number), 0);
     const CtabRun run = ctab::test::wait_ctab(pid, capture);

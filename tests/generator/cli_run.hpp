@@ -23,8 +23,8 @@ struct CtabRun {
 };
 
 struct CtabSpawnOptions {
-  int stdout_fd = -1;                   //!< a descriptor for stdout instead of a capture file
-  std::vector<std::string> environment; //!< NAME=VALUE added to the environment
+  int stdout_fd = -1;                    //!< a descriptor for stdout instead of a capture file
+  std::vector<std::string> environment;  //!< NAME=VALUE added to the environment
 };
 
 inline std::string read_text(const std::string& path) {
@@ -50,9 +50,13 @@ inline pid_t spawn_ctab(const std::vector<std::string>& arguments, const std::st
   envp.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  if (options.stdout_fd >= 0) posix_spawn_file_actions_adddup2(&actions, options.stdout_fd, STDOUT_FILENO);
-  else posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, (capture + ".out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, (capture + ".err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (options.stdout_fd >= 0)
+    posix_spawn_file_actions_adddup2(&actions, options.stdout_fd, STDOUT_FILENO);
+  else
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, (capture + ".out").c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, (capture + ".err").c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   pid_t pid = -1;
   if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) != 0) pid = -1;
   posix_spawn_file_actions_destroy(&actions);

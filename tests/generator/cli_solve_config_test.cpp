@@ -22,8 +22,9 @@ double total_force(const ctab::tables::Table& t, std::size_t i_dy, std::size_t i
 }  // namespace
 
 TEST(CliSolveConfig, ReproducesTableEntries) {
-  const std::string text = "[axes]\nlateral_displacement_m = { start = -8e-3, stop = 8e-3, step = 4e-3 }\n"
-                           "vertical_load_N = [60e3, 90e3]\n";
+  const std::string text =
+      "[axes]\nlateral_displacement_m = { start = -8e-3, stop = 8e-3, step = 4e-3 }\n"
+      "vertical_load_N = [60e3, 90e3]\n";
   const std::string path = ctab::test::write_temp("solve_config.toml", text);
   const ctab::gen::TableConfig config = ctab::gen::read_table_config(path);
   const ctab::tables::Table table = ctab::gen::generate_table(config, ctab::gen::GeneratorInfo{});
@@ -31,7 +32,8 @@ TEST(CliSolveConfig, ReproducesTableEntries) {
     std::ostringstream dy;
     dy.precision(17);
     dy << table.lateral_displacement_m[i_dy];
-    const ctab::test::CtabRun run = ctab::test::run_ctab({"solve", "--config", path, "--dy", dy.str(), "--load", "90e3", "--json"});
+    const ctab::test::CtabRun run =
+        ctab::test::run_ctab({"solve", "--config", path, "--dy", dy.str(), "--load", "90e3", "--json"});
     ASSERT_EQ(run.exit_code, 0) << run.output();
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["mode"], "wheelset");
@@ -49,22 +51,28 @@ TEST(CliSolveConfig, ReproducesTableEntries) {
   const ctab::test::CtabRun missing = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0"});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("--load: " + path + " has a vertical_load_N axis of 2 values: give --load VALUE"),
-            std::string::npos) << missing.err;
-  const ctab::test::CtabRun excluded = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0", "--mode", "wheel"});
+            std::string::npos)
+      << missing.err;
+  const ctab::test::CtabRun excluded =
+      ctab::test::run_ctab({"solve", "--config", path, "--dy", "0", "--mode", "wheel"});
   EXPECT_EQ(excluded.exit_code, 2);
   EXPECT_NE(excluded.err.find("--config excludes --mode"), std::string::npos) << excluded.err;
 }
 
 TEST(CliSolveConfig, ConfigErrorsNameTheFileAndKey) {
-  const std::string path = ctab::test::write_temp("solve_bad_profile.toml", "[profiles]\nwheel = \"/no/such/wheel.prw\"\n"
-                                                  "[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n");
+  const std::string path =
+      ctab::test::write_temp("solve_bad_profile.toml",
+                             "[profiles]\nwheel = \"/no/such/wheel.prw\"\n"
+                             "[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n");
   const ctab::test::CtabRun run = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0"});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find(path + ":2: 'profiles.wheel': "), std::string::npos) << run.err;
-  const std::string wide = ctab::test::write_temp("solve_wide_strips.toml", "[solver]\nstrip_width_m = 0.5\n[axes]\n"
+  const std::string wide = ctab::test::write_temp("solve_wide_strips.toml",
+                                                  "[solver]\nstrip_width_m = 0.5\n[axes]\n"
                                                   "lateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n");
   const ctab::test::CtabRun strips = ctab::test::run_ctab({"solve", "--config", wide, "--dy", "0"});
   EXPECT_EQ(strips.exit_code, 2);
   EXPECT_NE(strips.err.find(wide + ":2: 'solver.strip_width_m': expected a strip width in [1e-05, 0.002] m, got 0.5"),
-            std::string::npos) << strips.err;
+            std::string::npos)
+      << strips.err;
 }
