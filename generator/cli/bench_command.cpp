@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "setup_options.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/mim1d.hpp"
 #include "ctab/fixtures/paper_cases.hpp"
@@ -123,13 +124,20 @@ Command add_bench_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("bench", "Print speed figures (benchmarks, never timed tests)");
   app->require_subcommand(1);
   auto seconds = std::make_shared<double>(1.0);
+  const CLI::Validator seconds_check = finite_positive("s", 3600.0);
   CLI::App* solver = app->add_subcommand("solver", "MIM-1D on the Hertz case at strip widths 0.2, 0.08, 0.04 mm");
-  solver->add_option("--seconds", *seconds, "measuring time per width [s] (default 1)");
+  solver->add_option("--seconds", *seconds, "measuring time per width [s]")
+      ->capture_default_str()
+      ->check(seconds_check);
   CLI::App* wheelrail = app->add_subcommand("wheelrail", "Geometry plus MIM-1D per wheel-rail case (the CONTACT cases)");
-  wheelrail->add_option("--seconds", *seconds, "measuring time per case [s] (default 1)");
+  wheelrail->add_option("--seconds", *seconds, "measuring time per case [s]")
+      ->capture_default_str()
+      ->check(seconds_check);
   auto repetitions = std::make_shared<int>(5);
   CLI::App* generate = app->add_subcommand("generate", "The default table at 1 and 2 threads: time, parallel efficiency, file size");
-  generate->add_option("--repetitions", *repetitions, "runs per thread count (default 5)");
+  generate->add_option("--repetitions", *repetitions, "runs per thread count")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   return {app, [seconds, solver, wheelrail, repetitions] {
             if (solver->parsed()) return run_bench_solver(*seconds);
             if (wheelrail->parsed()) return run_bench_wheelrail(*seconds);

@@ -17,5 +17,6 @@ Command add_bench_command(CLI::App& parent);
 Command add_geometry_command(CLI::App& parent);
 Command add_generate_command(CLI::App& parent);
 Command add_inspect_command(CLI::App& parent);
+Command add_config_command(CLI::App& parent);
 
 }  // namespace ctab::cli

@@ -1,38 +1,75 @@
-// ctab: wheel-rail contact tables. One executable, subcommands; exceptions stop here.
+// ctab: wheel-rail contact tables. One executable, subcommands; exceptions stop here and become exit codes
+// (exit_codes.hpp): 0 success, 2 usage or input error, 3 I/O failure, 4 failed solves or table cases.
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <vector>
 
 #include "commands.hpp"
+#include "exit_codes.hpp"
 #include "version.hpp"
 #include "ctab/contact/error.hpp"
 
+namespace {
 
-int main(int argc, char** argv) {
-  CLI::App app{"ctab - wheel-rail contact tables: MIM-1D normal contact, table generation, real-time lookup"};
-  app.set_version_flag("--version", std::string("ctab ") + CTAB_VERSION + " (" + CTAB_GIT_COMMIT + ")");
-  app.require_subcommand(1);
-  const std::vector<ctab::cli::Command> commands = {ctab::cli::add_generate_command(app),
-                                                    ctab::cli::add_inspect_command(app),
-                                                    ctab::cli::add_solve_command(app),
-                                                    ctab::cli::add_paper_cases_command(app),
-                                                    ctab::cli::add_geometry_command(app),
-                                                    ctab::cli::add_bench_command(app)};
+// Every command's output reaches standard output or the run fails: a full disk or a closed pipe (SIGPIPE is
+// ignored, so it is a write error here) exits 3 with a message on stderr.
+int finish_standard_output(int code) {
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && !std::ferror(stdout) && std::cout.good()) return code;
+  std::fprintf(stderr, "ctab: error: cannot write to standard output%s%s\n", error ? ": " : "",
+               error ? std::strerror(error) : "");
+  return code == ctab::cli::kExitUsage ? code : ctab::cli::kExitIo;
+}
+
+int run(CLI::App& app, const std::vector<ctab::cli::Command>& commands, int argc, char** argv) {
+  using namespace ctab::cli;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0 (printed on stdout); every other parse error is a usage error.
+    return app.exit(e) == 0 ? kExitSuccess : kExitUsage;
   }
   try {
     for (const auto& command : commands)
       if (command.app->parsed()) return command.run();
+  } catch (const IoError& e) {
+    std::cerr << "ctab: error: " << e.what() << '\n';
+    return kExitIo;
   } catch (const ctab::gen::Error& e) {
     std::cerr << "ctab: error: " << e.what() << '\n';
-    return 2;
+    return kExitUsage;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << "ctab: error: " << e.what() << '\n';
+    return kExitIo;
   } catch (const std::exception& e) {
     std::cerr << "ctab: internal error: " << e.what() << '\n';
-    return 3;
+    return kExitInternal;
   }
-  return 1;
+  return kExitInternal;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::signal(SIGPIPE, SIG_IGN);
+  CLI::App app{"ctab - wheel-rail contact tables: MIM-1D normal contact, table generation, real-time lookup"};
+  app.set_version_flag("--version", std::string("ctab ") + CTAB_VERSION + " (" + CTAB_GIT_COMMIT + ")");
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("ctab: error: ") + e.what() + "\nRun with --help for more information.\n";
+  });
+  const std::vector<ctab::cli::Command> commands = {
+      ctab::cli::add_generate_command(app),    ctab::cli::add_inspect_command(app),  ctab::cli::add_solve_command(app),
+      ctab::cli::add_paper_cases_command(app), ctab::cli::add_geometry_command(app), ctab::cli::add_bench_command(app),
+      ctab::cli::add_config_command(app)};
+  return finish_standard_output(run(app, commands, argc, argv));
 }

@@ -1,0 +1,21 @@
+#pragma once
+//! Exit codes of the ctab executable (README "Exit codes") and the error that maps to the I/O code.
+#include "ctab/contact/error.hpp"
+
+namespace ctab::cli {
+
+enum ExitCode : int {
+  kExitSuccess = 0,
+  kExitInternal = 1,    //!< an unexpected internal error (a bug)
+  kExitUsage = 2,       //!< bad usage or input: options, config, profile or gap files (ParseError, InputError)
+  kExitIo = 3,          //!< I/O failure: the output cannot be written, standard output fails
+  kExitCaseFailed = 4,  //!< a solve, or some cases of a written table, did not succeed (statuses say why)
+};
+
+//! Output cannot be written (exit code 3).
+class IoError : public gen::Error {
+ public:
+  using gen::Error::Error;
+};
+
+}  // namespace ctab::cli

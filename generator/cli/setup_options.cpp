@@ -1,0 +1,169 @@
+#include "setup_options.hpp"
+
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <sstream>
+
+#include "ctab/io/profile_io.hpp"
+
+namespace ctab::cli {
+
+namespace {
+
+// A rule on a number option: what is expected (for messages) and the test.
+struct NumberRule {
+  std::string expectation;
+  std::function<bool(double)> accept;
+};
+
+// Parses the whole text as a number; false if it is not one.
+bool parse_number(const std::string& text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0';
+}
+
+// A number check run by CLI11 on the option's text; an unparsable text is left to CLI11's conversion error.
+CLI::Validator number_check(const NumberRule& rule) {
+  return CLI::Validator(
+      [rule](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!parse_number(text, value) || rule.accept(value)) return {};
+        return "expected " + rule.expectation + ", got " + text;
+      },
+      rule.expectation);
+}
+
+// A hidden alias of `main` (kept for earlier scripts). Hidden CLI11 options have no name in CLI11's messages, so
+// the alias checks its value itself and names itself in errors.
+void add_hidden_alias(CLI::App& app, const std::string& alias, CLI::Option* main, double& target,
+                      const NumberRule& rule) {
+  app.add_option_function<std::string>(
+         alias,
+         [alias, main, &target, rule](const std::string& text) {
+           if (main->count() > 0) throw CLI::ValidationError(alias, "alias of " + main->get_name() + "; give only one");
+           double value = 0.0;
+           if (!parse_number(text, value)) throw CLI::ValidationError(alias, "expected a number, got " + text);
+           if (!rule.accept(value)) throw CLI::ValidationError(alias, "expected " + rule.expectation + ", got " + text);
+           target = value;
+         },
+         "alias of " + main->get_name())
+      ->group("");
+}
+
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+}  // namespace
+
+CLI::Validator finite_range(double min, double max, const std::string& unit) {
+  return number_check({"a number in [" + number_text(min) + ", " + number_text(max) + "] " + unit,
+                       [min, max](double v) { return std::isfinite(v) && v >= min && v <= max; }});
+}
+
+CLI::Validator finite_positive(const std::string& unit, double max) {
+  const std::string bound = max < 1e300 ? " up to " + number_text(max) : "";
+  return number_check({"a finite number > 0" + bound + " " + unit,
+                       [max](double v) { return std::isfinite(v) && v > 0.0 && v <= max; }});
+}
+
+gen::TableConfig default_table_config(const std::string& source) {
+  return gen::parse_table_config(gen::kDefaultTableConfig, source);
+}
+
+std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, unsigned groups) {
+  std::vector<CLI::Option*> added;
+  auto add = [&](CLI::Option* option) {
+    added.push_back(option);
+    return option;
+  };
+  if (groups & kProfiles) {
+    add(app.add_option("--wheel", c.wheel, "wheel profile: S1002 (built in) or a file (.prw, .whl, 2-column y z in mm)")
+            ->capture_default_str());
+    add(app.add_option("--rail", c.rail,
+                       "rail profile: UIC60 (built-in 60E1) or a file (.prr, .ban, 2-column y z in mm)")
+            ->capture_default_str());
+    add(app.add_option("--inclination", c.inclination_text,
+                       "rail inclination: 1/40, 1/30, 1/20 or 0 (already inclined)")
+            ->capture_default_str());
+    add(app.add_option("--smoothing", c.smoothing_length_m, "smoothing length of point profiles [m] (0 interpolates)")
+            ->capture_default_str()
+            ->check(finite_range(0.0, 0.05, "m")));
+  }
+  if (groups & kTrack) {
+    add(app.add_option("--gauge", c.track.gauge_m, "track gauge [m]")
+            ->capture_default_str()
+            ->check(finite_positive("m", 3.0)));
+    add(app.add_option("--flange-back-distance", c.track.flange_back_distance_m, "wheelset flange-back distance [m]")
+            ->capture_default_str()
+            ->check(finite_positive("m", 3.0)));
+    add(app.add_option("--nominal-radius", c.track.nominal_radius_m, "nominal rolling radius [m]")
+            ->capture_default_str()
+            ->check(finite_positive("m", 2.0)));
+  }
+  if (groups & kMode) {
+    add(app.add_option_function<std::string>(
+               "--mode",
+               [&c](const std::string& mode) {
+                 c.mode = mode == "wheel" ? gen::ContactMode::SingleWheel : gen::ContactMode::Wheelset;
+               },
+               "wheelset (rigid roll, both wheels touching) or wheel (single wheel, roll 0)")
+            ->check(CLI::IsMember({"wheelset", "wheel"}))
+            ->default_str(c.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"));
+  }
+  if (groups & kSolver) {
+    add(app.add_option_function<std::string>(
+               "--method",
+               [&c](const std::string& method) {
+                 c.method = method == "hertz" ? gen::NormalMethod::Hertz : gen::NormalMethod::Mim1d;
+               },
+               "normal-contact method")
+            ->check(CLI::IsMember({"mim1d", "hertz"}))
+            ->default_str(c.method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"));
+    add(app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
+            ->capture_default_str()
+            ->check(finite_range(kMinStripWidth_m, kMaxStripWidth_m, "m")));
+  }
+  if (groups & kMaterial) {
+    const NumberRule youngs{"a finite Young's modulus > 0 in Pa", [](double v) { return std::isfinite(v) && v > 0.0; }};
+    const NumberRule poisson{"a Poisson's ratio in (-1, 0.5]", [](double v) { return v > -1.0 && v <= 0.5; }};
+    CLI::Option* E =
+        add(app.add_option("--youngs-modulus", c.material.youngs_modulus_Pa, "Young's modulus of both bodies [Pa]")
+                ->capture_default_str()
+                ->check(number_check(youngs)));
+    CLI::Option* nu =
+        add(app.add_option("--poisson-ratio", c.material.poisson_ratio, "Poisson's ratio of both bodies [-]")
+                ->capture_default_str()
+                ->check(number_check(poisson)));
+    add_hidden_alias(app, "--E", E, c.material.youngs_modulus_Pa, youngs);
+    add_hidden_alias(app, "--nu", nu, c.material.poisson_ratio, poisson);
+  }
+  return added;
+}
+
+void finish_setup_options(gen::TableConfig& config) {
+  config.inclination = gen::parse_inclination(config.inclination_text, "--inclination", 0, "");
+}
+
+int sweep_threads(int requested) {
+  if (requested > 0) return requested;
+  const int available = omp_get_max_threads();
+  if (available <= kMaxThreads) return available;
+  std::fprintf(stderr, "ctab: warning: OMP_NUM_THREADS asks for %d threads; using %d\n", available, kMaxThreads);
+  return kMaxThreads;
+}
+
+CLI::Option* add_threads_option(CLI::App& app, int& threads) {
+  return app.add_option("--threads", threads, "OpenMP threads (0: OMP_NUM_THREADS or all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, kMaxThreads));
+}
+
+}  // namespace ctab::cli

@@ -1,0 +1,88 @@
+#include "solve_output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "ctab/io/solution_json.hpp"
+
+namespace ctab::cli {
+
+namespace {
+
+const char* mode_name(gen::ContactMode mode) { return mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"; }
+const char* method_name(gen::NormalMethod method) { return method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"; }
+const char* wheel_name(int w) { return w == 0 ? "right" : "left"; }
+
+void print_wheel(const char* name, const gen::WheelContact& c) {
+  std::printf(
+      "%s wheel: %s, vertical approach %.5f mm, normal load %.3f kN, vertical load %.3f kN, %d iterations, "
+      "%.3f ms\n",
+      name, gen::status_name(c.status), c.vertical_approach_m * 1e3, c.normal_force_N * 1e-3, c.vertical_force_N * 1e-3,
+      c.iterations, c.solve_time_s * 1e3);
+  for (const auto& p : c.patches)
+    std::printf(
+        "  %s patch: rail y %.3f mm (centre of pressure %.3f), wheel y %.3f mm, angle %.3f deg, radius %.3f "
+        "mm, force %.3f kN, area %.3f mm^2, max pressure %.1f MPa, approach %.5f mm\n",
+        p.zone.c_str(), p.y_rail_m * 1e3, p.y_cop_rail_m * 1e3, p.y_wheel_m * 1e3,
+        p.contact_angle_rad * 180 / std::numbers::pi, p.rolling_radius_m * 1e3, p.normal_force_N * 1e-3,
+        p.area_m2 * 1e6, p.max_pressure_Pa * 1e-6, p.approach_m * 1e3);
+  for (const auto& m : c.near_misses)
+    if (m.gap_m < 2e-3)
+      std::printf("  near miss: rail y %.3f mm, wheel y %.3f mm, gap %.4f mm\n", m.rail_y_m * 1e3, m.wheel_s_m * 1e3,
+                  m.gap_m * 1e3);
+}
+
+}  // namespace
+
+void print_summary(const gen::NormalSolution& s) {
+  std::printf("method %s: %s after %d iterations (%d outer), residual %.2e, %.3f ms\n", s.method.c_str(),
+              gen::status_name(s.status), s.iterations, s.outer_iterations, s.residual, s.solve_time_s * 1e3);
+  std::printf("approach %.6f mm, normal load %.4f kN, %zu patch(es)\n", s.approach_m * 1e3, s.normal_load_N * 1e-3,
+              s.patches.size());
+  for (std::size_t k = 0; k < s.patches.size(); ++k) {
+    const auto& p = s.patches[k];
+    std::printf("  patch %zu: y %.3f..%.3f mm, force %.4f kN, area %.4f mm^2, max pressure %.2f MPa, %zu strips\n",
+                k + 1, p.y_min_m * 1e3, p.y_max_m * 1e3, p.normal_force_N * 1e-3, p.area_m2 * 1e6,
+                p.max_pressure_Pa * 1e-6, p.strips.size());
+  }
+}
+
+void print_summary(const gen::TableConfig& config, const TableCase& result, double load_value) {
+  std::printf("%s on %s (%s), %s mode, %s, strips %.3f mm: dy %.3f mm, roll %.4f mrad%s, %s %g\n", config.wheel.c_str(),
+              config.rail.c_str(), config.inclination_text.c_str(), mode_name(config.mode), method_name(config.method),
+              config.strip_width_m * 1e3, result.dy_m * 1e3, result.roll_rad * 1e3,
+              result.roll_converged ? "" : " (roll iteration failed)", gen::load_axis_name(config.load_kind),
+              load_value);
+  for (int w = 0; w < 2; ++w)
+    if (result.solved[w]) print_wheel(wheel_name(w), result.wheel[w]);
+}
+
+nlohmann::json to_json(const gen::TableConfig& config, const TableCase& result, double load_value) {
+  nlohmann::json json = {{"mode", mode_name(config.mode)},
+                         {"method", method_name(config.method)},
+                         {"dy_m", result.dy_m},
+                         {"roll_rad", result.roll_rad},
+                         {"roll_converged", result.roll_converged},
+                         {"load_kind", gen::load_axis_name(config.load_kind)},
+                         {"load_value", load_value},
+                         {"config_source", config.source}};
+  for (int w = 0; w < 2; ++w)
+    if (result.solved[w]) json[wheel_name(w)] = gen::to_json(result.wheel[w]);
+  return json;
+}
+
+bool report_failures(const CaseSetup& setup, const TableCase& result, double load_value) {
+  bool failed = false;
+  for (int w = 0; w < 2; ++w) {
+    if (!result.solved[w] || gen::is_success(result.wheel[w].status)) continue;
+    failed = true;
+    const std::string hint = failure_hint(setup, w == 0 ? Wheel::Right : Wheel::Left, result);
+    std::fprintf(stderr, "ctab solve: %s wheel at dy = %g m, %s = %g (%s): %s%s%s\n", wheel_name(w), result.dy_m,
+                 gen::load_axis_name(setup.config().load_kind), load_value, setup.config().source.c_str(),
+                 gen::status_name(result.wheel[w].status), hint.empty() ? "" : "; ", hint.c_str());
+  }
+  return failed;
+}
+
+}  // namespace ctab::cli

@@ -1,0 +1,21 @@
+#pragma once
+//! Output of `ctab solve`: readable summaries and JSON of a gap-profile solution and of a wheel-rail case, and the
+//! one-line stderr report of every wheel that did not succeed.
+#include <nlohmann/json.hpp>
+
+#include "ctab/contact/normal_solution.hpp"
+#include "ctab/sweep/table_config.hpp"
+#include "table_case.hpp"
+
+namespace ctab::cli {
+
+void print_summary(const gen::NormalSolution& solution);
+//! A header line (set-up, dy, roll, load), then each solved wheel with its patches and near misses.
+void print_summary(const gen::TableConfig& config, const TableCase& result, double load_value);
+//! {"mode", "method", "dy_m", "roll_rad", "load_kind", "load_value", "config_source", "right": {...},
+//!  "left": {...}} with each wheel as gen::to_json(WheelContact); only solved wheels appear.
+[[nodiscard]] nlohmann::json to_json(const gen::TableConfig& config, const TableCase& result, double load_value);
+//! One line on stderr per solved wheel whose status is not a success, with the geometry's hint; true if any.
+bool report_failures(const CaseSetup& setup, const TableCase& result, double load_value);
+
+}  // namespace ctab::cli

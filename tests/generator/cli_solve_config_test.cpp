@@ -1,0 +1,78 @@
+// `ctab solve --config FILE --dy D [--load V]` reproduces a table entry: same set-up, roll, load kind and statuses
+// as the generator (compared with gen::generate_table in process).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+#include "cli_run.hpp"
+#include "ctab/sweep/table_generator.hpp"
+
+namespace {
+
+double total_force(const ctab::tables::Table& t, std::size_t i_dy, std::size_t i_second, std::size_t wheel) {
+  double sum = 0.0;
+  for (std::size_t slot = 0; slot < ctab::tables::kSlots; ++slot) {
+    const std::size_t k = t.patch_index(i_dy, i_second, wheel, slot);
+    if (t.patch.present[k]) sum += t.patch.normal_force_N[k];
+  }
+  return sum;
+}
+
+}  // namespace
+
+TEST(CliSolveConfig, ReproducesTableEntries) {
+  const std::string text =
+      "[axes]\nlateral_displacement_m = { start = -8e-3, stop = 8e-3, step = 4e-3 }\n"
+      "vertical_load_N = [60e3, 90e3]\n";
+  const std::string path = ctab::test::write_temp("solve_config.toml", text);
+  const ctab::gen::TableConfig config = ctab::gen::read_table_config(path);
+  const ctab::tables::Table table = ctab::gen::generate_table(config, ctab::gen::GeneratorInfo{});
+  for (const std::size_t i_dy : {std::size_t{0}, std::size_t{2}, std::size_t{4}}) {
+    std::ostringstream dy;
+    dy.precision(17);
+    dy << table.lateral_displacement_m[i_dy];
+    const ctab::test::CtabRun run =
+        ctab::test::run_ctab({"solve", "--config", path, "--dy", dy.str(), "--load", "90e3", "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.output();
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["mode"], "wheelset");
+    EXPECT_EQ(json["load_kind"], "vertical_load_N");
+    EXPECT_EQ(json["config_source"], path);
+    EXPECT_EQ(json["roll_rad"].get<double>(), table.roll_rad[i_dy * 2 + 1]) << "dy " << dy.str();
+    // The right wheel is solved exactly as in the table; the table's left wheel is the mirrored right wheel at -dy,
+    // equal to the direct solve up to the roll iteration's tolerance.
+    EXPECT_EQ(json["right"]["normal_load_N"].get<double>(), total_force(table, i_dy, 1, 0)) << "dy " << dy.str();
+    EXPECT_NEAR(json["left"]["normal_load_N"].get<double>(), total_force(table, i_dy, 1, 1), 1.0) << "dy " << dy.str();
+    for (std::size_t wheel = 0; wheel < 2; ++wheel)
+      EXPECT_EQ(table.status[(i_dy * 2 + 1) * 2 + wheel], 0) << "converged in the table";
+  }
+  // A config with a load axis needs --load; a single-value config does not.
+  const ctab::test::CtabRun missing = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("--load: " + path + " has a vertical_load_N axis of 2 values: give --load VALUE"),
+            std::string::npos)
+      << missing.err;
+  const ctab::test::CtabRun excluded =
+      ctab::test::run_ctab({"solve", "--config", path, "--dy", "0", "--mode", "wheel"});
+  EXPECT_EQ(excluded.exit_code, 2);
+  EXPECT_NE(excluded.err.find("--config excludes --mode"), std::string::npos) << excluded.err;
+}
+
+TEST(CliSolveConfig, ConfigErrorsNameTheFileAndKey) {
+  const std::string path =
+      ctab::test::write_temp("solve_bad_profile.toml",
+                             "[profiles]\nwheel = \"/no/such/wheel.prw\"\n"
+                             "[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n");
+  const ctab::test::CtabRun run = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0"});
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find(path + ":2: 'profiles.wheel': "), std::string::npos) << run.err;
+  const std::string wide = ctab::test::write_temp("solve_wide_strips.toml",
+                                                  "[solver]\nstrip_width_m = 0.5\n[axes]\n"
+                                                  "lateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n");
+  const ctab::test::CtabRun strips = ctab::test::run_ctab({"solve", "--config", wide, "--dy", "0"});
+  EXPECT_EQ(strips.exit_code, 2);
+  EXPECT_NE(strips.err.find(wide + ":2: 'solver.strip_width_m': expected a strip width in [1e-05, 0.002] m, got 0.5"),
+            std::string::npos)
+      << strips.err;
+}
