@@ -12,7 +12,7 @@ namespace {
 
 double total_force(const ctab::tables::Table& t, std::size_t i_dy, std::size_t i_second, std::size_t wheel) {
   double sum = 0.0;
-  for (std::size_t slot = 0; slot < ctab::tables::kSlots; ++slot) {
+  for (std::size_t slot = 0; slot < t.n_slots; ++slot) {
     const std::size_t k = t.patch_index(i_dy, i_second, wheel, slot);
     if (t.patch.present[k]) sum += t.patch.normal_force_N[k];
   }
@@ -45,7 +45,7 @@ TEST(CliSolveConfig, ReproducesTableEntries) {
     EXPECT_EQ(json["right"]["normal_load_N"].get<double>(), total_force(table, i_dy, 1, 0)) << "dy " << dy.str();
     EXPECT_NEAR(json["left"]["normal_load_N"].get<double>(), total_force(table, i_dy, 1, 1), 1.0) << "dy " << dy.str();
     for (std::size_t wheel = 0; wheel < 2; ++wheel)
-      EXPECT_EQ(table.status[(i_dy * 2 + 1) * 2 + wheel], 0) << "converged in the table";
+      EXPECT_EQ(table.status[table.wheel_index(i_dy, 1, wheel)], ctab::tables::CaseStatus::Converged) << "converged in the table";
   }
   // A config with a load axis needs --load; a single-value config does not.
   const ctab::test::CtabRun missing = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0"});
