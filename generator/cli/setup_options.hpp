@@ -11,10 +11,9 @@
 
 namespace ctab::cli {
 
-//! Strip widths outside this range are input errors: below 10 um a wheel-rail patch needs thousands of strips
-//! (1 um ran for minutes and took 10 GB); above 2 mm a patch (5-20 mm wide) gets too few strips to resolve it.
-inline constexpr double kMinStripWidth_m = 10e-6;
-inline constexpr double kMaxStripWidth_m = 2e-3;
+//! The strip-width range of configs (table_config.hpp) holds for the command line too.
+using gen::kMaxStripWidth_m;
+using gen::kMinStripWidth_m;
 //! An explicit --threads above this is an input error; a larger OMP_NUM_THREADS is clamped to it (thousands of
 //! threads exhaust memory and crashed the OpenMP runtime; no machine this targets has more cores).
 inline constexpr int kMaxThreads = 1024;

@@ -28,7 +28,7 @@ std::string fresh_directory(const std::string& name) {
 
 const char* const kSmallConfig =
     "[solver]\nmode = \"wheel\"\n[axes]\n"
-    "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n";
+    "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\nvertical_load_N = 78.5e3\n";
 
 bool is_hdf5(const std::string& path) {
   const std::string text = ctab::test::read_text(path);

@@ -63,16 +63,18 @@ TEST(CliSolveConfig, ConfigErrorsNameTheFileAndKey) {
   const std::string path =
       ctab::test::write_temp("solve_bad_profile.toml",
                              "[profiles]\nwheel = \"/no/such/wheel.prw\"\n"
-                             "[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n");
+                             "[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n"
+                             "vertical_load_N = 78.5e3\n");
   const ctab::test::CtabRun run = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0"});
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find(path + ":2: 'profiles.wheel': "), std::string::npos) << run.err;
   const std::string wide = ctab::test::write_temp("solve_wide_strips.toml",
                                                   "[solver]\nstrip_width_m = 0.5\n[axes]\n"
-                                                  "lateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n");
+                                                  "lateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n"
+                                                  "vertical_load_N = 78.5e3\n");
   const ctab::test::CtabRun strips = ctab::test::run_ctab({"solve", "--config", wide, "--dy", "0"});
   EXPECT_EQ(strips.exit_code, 2);
-  EXPECT_NE(strips.err.find(wide + ":2: 'solver.strip_width_m': expected a strip width in [1e-05, 0.002] m, got 0.5"),
+  EXPECT_NE(strips.err.find(wide + ":2: 'solver.strip_width_m': expected a strip width in [1e-05, 0.005] m"),
             std::string::npos)
       << strips.err;
 }

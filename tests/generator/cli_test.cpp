@@ -57,7 +57,7 @@ TEST(Cli, HertzMethod) {
 
 TEST(Cli, GenerateAndInspect) {
   const std::string config = write_temp("small.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
-                                        "lateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 1e-3 }\n");
+                                        "lateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 1e-3 }\n" "vertical_load_N = 78.5e3\n");
   const std::string table = ::testing::TempDir() + "small.h5";
   const Combined generated = run_ctab("generate " + config + " -o " + table + " --threads 2");
   ASSERT_EQ(generated.exit_code, 0) << generated.output;
@@ -96,7 +96,7 @@ TEST(Cli, BadInputGivesOneLineErrorAndNonZeroExit) {
       {"solve --gap " + kSphere + " --load 1 --nu 0.7", "--nu: expected a Poisson's ratio in (-1, 0.5], got 0.7"},
       {"solve --gap " + kSphere + " --load 1 --poisson-ratio 0.7", "--poisson-ratio: expected a Poisson's ratio in (-1, 0.5]"},
       {"solve --gap " + kSphere + " --load nan", "--load: expected a number in [0, 1e+08]"},
-      {"solve --gap " + kSphere + " --load 1 --strip-width 0", "--strip-width: expected a number in [1e-05, 0.002] m, got 0"},
+      {"solve --gap " + kSphere + " --load 1 --strip-width 0", "--strip-width: expected a number in [1e-05, 0.005] m, got 0"},
       {"solve --gap " + kSphere, "give exactly one of --approach METRES or --load NEWTONS"},
       {"solve --gap " + kSphere + " --load 1 --approach 1e-3", "give exactly one of --approach METRES or --load NEWTONS"},
       {"solve --gap " + kSphere + " --load 1 --method magic", "magic"},
@@ -176,7 +176,7 @@ TEST(CliExitCodes, EachCode) {
     std::string expected;  // on stdout or stderr
   };
   const std::string failing = write_temp("failing.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
-                                         "lateral_displacement_m = { start = -0.08, stop = -0.079, step = 1e-3 }\n");
+                                         "lateral_displacement_m = { start = -0.08, stop = -0.079, step = 1e-3 }\n" "vertical_load_N = 78.5e3\n");
   const Case cases[] = {
       {"--help", 0, "Subcommands"},
       {"--version", 0, "ctab "},
@@ -212,8 +212,8 @@ TEST(CliInput, EveryBadInputSaysWhatWentWrong) {
   const std::string wheelrail = "solve --dy 2e-3 --normal-load 78.5e3 ";
   const Case cases[] = {
       {"solve --dy 2e-3 --approach -1e-3", 2, "--approach: expected a number in [0, 0.01] m, got -1e-3"},
-      {wheelrail + "--strip-width 1", 2, "--strip-width: expected a number in [1e-05, 0.002] m, got 1"},
-      {wheelrail + "--strip-width 1e-6", 2, "--strip-width: expected a number in [1e-05, 0.002] m, got 1e-6"},
+      {wheelrail + "--strip-width 1", 2, "--strip-width: expected a number in [1e-05, 0.005] m, got 1"},
+      {wheelrail + "--strip-width 1e-6", 2, "--strip-width: expected a number in [1e-05, 0.005] m, got 1e-6"},
       {"solve --dy 1 --normal-load 78.5e3", 2, "wheel is off its rail at dy = 1000 mm"},
       {"solve --dy -0.08 --normal-load 78.5e3 --mode wheelset", 4,
        "right wheel at dy = -0.08 m, normal_load_N = 78500 (command line): invalid-input; first contact at the end of "
@@ -238,7 +238,7 @@ TEST(CliInput, EveryBadInputSaysWhatWentWrong) {
 
 TEST(CliInput, OversizedOmpNumThreadsIsClampedWithAWarning) {
   const std::string config = write_temp("threads.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
-                                        "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n");
+                                        "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n" "vertical_load_N = 78.5e3\n");
   ctab::test::CtabSpawnOptions options;
   options.environment = {"OMP_NUM_THREADS=100000"};
   const CtabRun run = ctab::test::run_ctab({"generate", config, "-o", ::testing::TempDir() + "threads.h5"}, options);

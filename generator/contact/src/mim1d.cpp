@@ -16,8 +16,25 @@ namespace ctab::gen {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Relative step and residual below which strips outside the set are checked for interpenetration.
+// Relative step and residual below which strips outside the set are checked for interpenetration (chosen: early
+// enough that admissions do not wait for full convergence, late enough that the deformation is nearly right).
 constexpr double kAdmissionCheckLevel = 1.0e-3;
+// Admitted strip's starting load (admit_strip): a quarter of its neighbour's, at least 1e-12 N, refined by
+// kAdmissionNewtonSteps Newton steps on its own self term, each step kept within [1/20, 4] x the load (chosen).
+constexpr double kAdmissionStartFraction = 0.25;
+constexpr double kAdmissionMinimumLoad_N = 1e-12;
+constexpr int kAdmissionNewtonSteps = 8;
+constexpr double kAdmissionStepFloor = 0.05;
+constexpr double kAdmissionStepCeiling = 4.0;
+// CONTACT's limit R_y <= 20 R_x: the Hertz start uses B >= A/20 (README, "bottleneck cure").
+constexpr double kCurvatureRatioLimit = 20.0;
+// Start approach beyond first contact when Hertz fails at the deepest strip [m] (chosen: 1 um).
+constexpr double kFallbackStartApproach_m = 1e-6;
+// Outer iteration without contact: the approach beyond first contact doubles, plus 1 nm so that it leaves 0.
+constexpr double kNoContactGrowth = 2.0;
+constexpr double kNoContactNudge_m = 1e-9;
+// Warm start along dN/d(delta): a strip predicted non-positive keeps half its load.
+constexpr double kWarmStartShrink = 0.5;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -167,13 +184,13 @@ void Mim1dSolver::admit_strip(std::size_t strip, double penetration_m) {
   // (a few Newton steps on the monotone self term), capped at the nearest loaded strip's load.
   const double c = compliance_[strip].compliance_m_per_Pa;
   const StripKernel& kernel = StripKernel::instance();
-  double load = std::max(load_[neighbour] * 0.25, 1e-12);
-  for (int i = 0; i < 8 && penetration_m > 0.0; ++i) {
+  double load = std::max(load_[neighbour] * kAdmissionStartFraction, kAdmissionMinimumLoad_N);
+  for (int i = 0; i < kAdmissionNewtonSteps && penetration_m > 0.0; ++i) {
     const double a = std::sqrt(c * load / (kPi * b_));
     double h = 0.0, t_dh = 0.0;
     kernel.value_and_scaled_slope(b_ / a, h, t_dh);
     const double u = kernel_scale_ * 2.0 * h * load, du = kernel_scale_ * 2.0 * (h - 0.5 * t_dh);
-    load = std::clamp(load - (u - penetration_m) / du, 0.05 * load, 4.0 * load);
+    load = std::clamp(load - (u - penetration_m) / du, kAdmissionStepFloor * load, kAdmissionStepCeiling * load);
   }
   load_[strip] = std::min(load, load_[neighbour]);
   length_[strip] = std::sqrt(c * load_[strip] / (kPi * b_));
@@ -189,9 +206,173 @@ void Mim1dSolver::refresh_compliances(double approach_m) {
   compliance_approach_ = approach_m;
 }
 
+bool Mim1dSolver::start_loads(double approach_m, bool warm_start) {
+  if (warm_start && !active_.empty()) {  // strips that no longer interpenetrate cannot carry load
+    std::erase_if(active_, [&](std::size_t i) {
+      if (grid_.h_m[i] < approach_m) return false;
+      load_[i] = 0.0;
+      return true;
+    });
+    if (!active_.empty()) return true;
+  }
+  initialise_zone(approach_m);
+  return true;
+}
+
+bool Mim1dSolver::active_compliances_valid() const {
+  for (const std::size_t i : active_)
+    if (!(compliance_[i].compliance_m_per_Pa > 0.0 && std::isfinite(compliance_[i].compliance_m_per_Pa))) return false;
+  return true;
+}
+
+void Mim1dSolver::gather_active_system(double approach_m) {
+  const auto n = static_cast<Eigen::Index>(active_.size());
+  rhs_.resize(n);
+  active_loads_.resize(n);
+  ones_.setOnes(n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    const std::size_t i = active_[static_cast<std::size_t>(r)];
+    rhs_(r) = approach_m - grid_.h_m[i];
+    active_loads_(r) = load_[i];
+  }
+}
+
+Mim1dSolver::SetCheck Mim1dSolver::check_active_set(const InnerState& state, double residual, double force_mismatch) {
+  const bool force_converged =
+      !state.target_load_N || std::abs(force_mismatch) <= options_.tolerance * *state.target_load_N;
+  // Newton converges quadratically: once the residual is at tolerance a step below sqrt(tol) is final.
+  const double change_tolerance =
+      options_.update == Mim1dUpdate::Newton ? std::sqrt(options_.tolerance) : options_.tolerance;
+  const bool converged_on_set =
+      state.last_change <= change_tolerance && residual <= options_.tolerance && force_converged;
+  // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
+  // and again at convergence.
+  const bool roughly_converged = state.last_change <= kAdmissionCheckLevel && residual <= kAdmissionCheckLevel;
+  if (!converged_on_set && !(roughly_converged && !state.set_checked)) return SetCheck::Iterate;
+  return converged_on_set ? SetCheck::CheckAndFinish : SetCheck::Check;
+}
+
+void Mim1dSolver::find_violators(double approach_m, double depth) {
+  // Candidates: the unloaded interpenetrating strips next to the contact, and the deepest strip of every
+  // unloaded run of the interpenetration zone (where a separate contact would start).
+  violators_.clear();
+  penetrations_.clear();
+  auto check = [&](std::size_t i) {
+    const double gap = grid_.h_m[i] + displacement_at(i) - approach_m;
+    if (gap < -options_.tolerance * depth) violators_.push_back(i), penetrations_.push_back(-gap);
+  };
+  const std::size_t n_all = grid_.size();
+  for (std::size_t i = 0; i < n_all;) {
+    if (!(grid_.h_m[i] < approach_m) || load_[i] > 0.0) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i, deepest = i;
+    while (end < n_all && grid_.h_m[end] < approach_m && !(load_[end] > 0.0)) {
+      if (grid_.h_m[end] < grid_.h_m[deepest]) deepest = end;
+      ++end;
+    }
+    if (i > 0 && load_[i - 1] > 0.0) check(i);
+    if (end < n_all && load_[end] > 0.0 && end - 1 != i) check(end - 1);
+    if (deepest != i && deepest != end - 1) check(deepest);
+    i = end;
+  }
+}
+
+bool Mim1dSolver::admit_violators(double approach_m, std::size_t& growth) {
+  // A violator also brings its interpenetrating neighbours within a reach that doubles each round, so a contact
+  // far wider than the starting zone grows in O(log n) rounds (extra strips leave again through a non-positive
+  // load).
+  const std::size_t n_all = grid_.size();
+  for (std::size_t k = 0; k < violators_.size(); ++k) {
+    const std::size_t v = violators_[k];
+    const std::size_t lo = v > growth ? v - growth : 0, hi = std::min(n_all - 1, v + growth);
+    for (std::size_t i = lo; i <= hi; ++i)
+      if (grid_.h_m[i] < approach_m && !(load_[i] > 0.0)) admit_strip(i, i == v ? penetrations_[k] : 0.0);
+  }
+  if (violators_.empty()) return false;
+  growth = 2 * growth + 1;
+  return true;
+}
+
+bool Mim1dSolver::newton_step(const InnerState& state, double force_mismatch, double& next_approach) {
+  factorisation_.compute(jacobian_);
+  next_loads_ = active_loads_ - factorisation_.solve(residual_);
+  if (state.target_load_N) {  // bordered system: J dN - d(delta) 1 = -R,  1^T dN = -F
+    slope_ = factorisation_.solve(ones_);
+    const double d_approach = (-force_mismatch - (next_loads_ - active_loads_).sum()) / slope_.sum();
+    next_loads_ += d_approach * slope_;
+    next_approach = state.approach_m + d_approach;
+  }
+  return !(next_loads_.array() <= 0.0).any();  // Newton overshoots at a patch edge
+}
+
+void Mim1dSolver::fixed_point_step(const InnerState& state, double& next_approach) {
+  if (options_.update == Mim1dUpdate::Newton) build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
+  factorisation_.compute(influence_);
+  if (state.target_load_N) {  // G N - delta 1 = -h,  1^T N = target
+    next_loads_ = factorisation_.solve(rhs_ - state.approach_m * ones_);  // G^-1 (-h)
+    slope_ = factorisation_.solve(ones_);
+    next_approach = (*state.target_load_N - next_loads_.sum()) / slope_.sum();
+    next_loads_ += next_approach * slope_;
+  } else {
+    next_loads_ = factorisation_.solve(rhs_);
+  }
+}
+
+bool Mim1dSolver::take_step(InnerState& state, double next_approach) {
+  if (!next_loads_.allFinite() || !std::isfinite(next_approach)) return false;
+  const double largest = next_loads_.maxCoeff();
+  if (!(largest > 0.0)) return false;
+  state.approach_m = next_approach;
+  // Strips with non-positive load leave the contact (paper Figure 3).
+  bool removed = false;
+  for (Eigen::Index r = 0; r < next_loads_.size(); ++r) {
+    const std::size_t i = active_[static_cast<std::size_t>(r)];
+    load_[i] = std::max(next_loads_(r), 0.0);
+    removed = removed || next_loads_(r) <= 0.0;
+  }
+  if (removed) {
+    std::erase_if(active_, [&](std::size_t i) { return load_[i] <= 0.0; });
+    state.last_change = std::numeric_limits<double>::infinity();
+    state.set_checked = false;
+  } else {
+    state.last_change = (next_loads_ - active_loads_).cwiseAbs().maxCoeff() / largest;
+  }
+  return true;
+}
+
+Mim1dSolver::IterationOutcome Mim1dSolver::iterate(InnerState& state, InnerResult& result) {
+  if (active_.empty() || !(state.approach_m - state.h_min > 0.0)) return IterationOutcome::Failed;
+  refresh_compliances(state.approach_m);
+  if (!active_compliances_valid()) return result.status = SolveStatus::InvalidInput, IterationOutcome::Failed;
+  const double depth = state.approach_m - state.h_min;
+  update_lengths();
+  const bool newton = options_.update == Mim1dUpdate::Newton;
+  build_matrices(newton ? MatrixKind::Jacobian : MatrixKind::Influence, true);
+  gather_active_system(state.approach_m);
+  const double force_mismatch = state.target_load_N ? active_loads_.sum() - *state.target_load_N : 0.0;
+  residual_ = displacement_ - rhs_;
+  result.residual = residual_.cwiseAbs().maxCoeff() / depth;
+  if (!std::isfinite(result.residual)) return IterationOutcome::Failed;
+  const SetCheck check = check_active_set(state, result.residual, force_mismatch);
+  if (check != SetCheck::Iterate) {
+    state.set_checked = true;
+    find_violators(state.approach_m, depth);
+    if (admit_violators(state.approach_m, state.growth)) {
+      state.set_checked = false;
+      state.last_change = std::numeric_limits<double>::infinity();
+      return IterationOutcome::Continue;
+    }
+    if (check == SetCheck::CheckAndFinish) return result.status = SolveStatus::Converged, IterationOutcome::Converged;
+  }
+  double next_approach = state.approach_m;
+  if (!newton || !newton_step(state, force_mismatch, next_approach)) fixed_point_step(state, next_approach);
+  return take_step(state, next_approach) ? IterationOutcome::Continue : IterationOutcome::Failed;
+}
+
 Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_start, const double* target_load_N) {
   InnerResult result;
-  const std::size_t n_all = grid_.size();
   const double h_min = *std::min_element(grid_.h_m.begin(), grid_.h_m.end());
   if (!(approach_m - h_min > 0.0)) {
     active_.clear();
@@ -199,149 +380,13 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
     result.status = SolveStatus::NoContact;
     return result;
   }
-  bool loads_known = warm_start && !active_.empty();
-  if (loads_known) {  // strips that no longer interpenetrate cannot carry load
-    std::erase_if(active_, [&](std::size_t i) {
-      if (grid_.h_m[i] < approach_m) return false;
-      load_[i] = 0.0;
-      return true;
-    });
-    loads_known = !active_.empty();
-  }
-  if (!loads_known) {
-    initialise_zone(approach_m);
-    loads_known = true;
-  }
-
-  const bool newton = options_.update == Mim1dUpdate::Newton;
-  double last_change = std::numeric_limits<double>::infinity();
-  bool set_checked = false;  // Eq. 4 checked since the active set last changed
-  std::size_t growth = 0;     // admission reach, in strips
-  Eigen::VectorXd rhs, residual, next, loads, ones, slope;
+  (void)start_loads(approach_m, warm_start);
+  InnerState state{approach_m, target_load_N, h_min};
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     result.iterations = iteration;
-    if (active_.empty() || !(approach_m - h_min > 0.0)) return result;  // NumericalFailure
-    refresh_compliances(approach_m);
-    for (const std::size_t i : active_)
-      if (!(compliance_[i].compliance_m_per_Pa > 0.0 && std::isfinite(compliance_[i].compliance_m_per_Pa))) {
-        result.status = SolveStatus::InvalidInput;
-        return result;
-      }
-    const double depth = approach_m - h_min;
-    if (loads_known) update_lengths();
-    build_matrices(newton && loads_known ? MatrixKind::Jacobian : MatrixKind::Influence, loads_known);
-    const auto n = static_cast<Eigen::Index>(active_.size());
-    rhs.resize(n);
-    loads.resize(n);
-    ones.setOnes(n);
-    for (Eigen::Index r = 0; r < n; ++r) {
-      const std::size_t i = active_[static_cast<std::size_t>(r)];
-      rhs(r) = approach_m - grid_.h_m[i];
-      loads(r) = load_[i];
-    }
-    const double force_mismatch = target_load_N ? loads.sum() - *target_load_N : 0.0;
-    if (loads_known) {
-      residual = displacement_ - rhs;
-      result.residual = residual.cwiseAbs().maxCoeff() / depth;
-      if (!std::isfinite(result.residual)) return result;
-      const bool force_converged = !target_load_N || std::abs(force_mismatch) <= options_.tolerance * *target_load_N;
-      // Newton converges quadratically: once the residual is at tolerance a step below sqrt(tol) is final.
-      const double change_tolerance = newton ? std::sqrt(options_.tolerance) : options_.tolerance;
-      const bool converged_on_set =
-          last_change <= change_tolerance && result.residual <= options_.tolerance && force_converged;
-      // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
-      // and again at convergence.
-      const bool roughly_converged = last_change <= kAdmissionCheckLevel && result.residual <= kAdmissionCheckLevel;
-      if (converged_on_set || (roughly_converged && !set_checked)) {
-        set_checked = true;
-        // A violator also brings its interpenetrating neighbours within a reach that doubles each round, so
-        // a contact far wider than the starting zone grows in O(log n) rounds (extra strips leave again
-        // through a non-positive load).
-        // Candidates: the unloaded interpenetrating strips next to the contact, and the deepest strip of every
-        // unloaded run of the interpenetration zone (where a separate contact would start).
-        violators_.clear();
-        penetrations_.clear();
-        auto check = [&](std::size_t i) {
-          const double gap = grid_.h_m[i] + displacement_at(i) - approach_m;
-          if (gap < -options_.tolerance * depth) violators_.push_back(i), penetrations_.push_back(-gap);
-        };
-        for (std::size_t i = 0; i < n_all;) {
-          if (!(grid_.h_m[i] < approach_m) || load_[i] > 0.0) {
-            ++i;
-            continue;
-          }
-          std::size_t end = i, deepest = i;
-          while (end < n_all && grid_.h_m[end] < approach_m && !(load_[end] > 0.0)) {
-            if (grid_.h_m[end] < grid_.h_m[deepest]) deepest = end;
-            ++end;
-          }
-          if (i > 0 && load_[i - 1] > 0.0) check(i);
-          if (end < n_all && load_[end] > 0.0 && end - 1 != i) check(end - 1);
-          if (deepest != i && deepest != end - 1) check(deepest);
-          i = end;
-        }
-        for (std::size_t k = 0; k < violators_.size(); ++k) {
-          const std::size_t v = violators_[k];
-          const std::size_t lo = v > growth ? v - growth : 0, hi = std::min(n_all - 1, v + growth);
-          for (std::size_t i = lo; i <= hi; ++i)
-            if (grid_.h_m[i] < approach_m && !(load_[i] > 0.0)) admit_strip(i, i == v ? penetrations_[k] : 0.0);
-        }
-        if (!violators_.empty()) {
-          growth = 2 * growth + 1;
-          set_checked = false;
-          last_change = std::numeric_limits<double>::infinity();
-          continue;
-        }
-        if (converged_on_set) {
-          result.status = SolveStatus::Converged;
-          return result;
-        }
-      }
-    }
-    double next_approach = approach_m;
-    bool fixed_point_step = !(newton && loads_known);
-    if (!fixed_point_step) {
-      factorisation_.compute(jacobian_);
-      next = loads - factorisation_.solve(residual);
-      if (target_load_N) {  // bordered system: J dN - d(delta) 1 = -R,  1^T dN = -F
-        slope = factorisation_.solve(ones);
-        const double d_approach = (-force_mismatch - (next - loads).sum()) / slope.sum();
-        next += d_approach * slope;
-        next_approach = approach_m + d_approach;
-      }
-      if ((next.array() <= 0.0).any()) fixed_point_step = true;  // Newton overshoots at a patch edge
-    }
-    if (fixed_point_step) {
-      if (newton && loads_known) build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
-      factorisation_.compute(influence_);
-      if (target_load_N) {  // G N - delta 1 = -h,  1^T N = target
-        next = factorisation_.solve(rhs - approach_m * ones);  // G^-1 (-h)
-        slope = factorisation_.solve(ones);
-        next_approach = (*target_load_N - next.sum()) / slope.sum();
-        next += next_approach * slope;
-      } else {
-        next = factorisation_.solve(rhs);
-      }
-    }
-    if (!next.allFinite() || !std::isfinite(next_approach)) return result;
-    const double largest = next.maxCoeff();
-    if (!(largest > 0.0)) return result;
-    approach_m = next_approach;
-    // Strips with non-positive load leave the contact (paper Figure 3).
-    bool removed = false;
-    for (Eigen::Index r = 0; r < n; ++r) {
-      const std::size_t i = active_[static_cast<std::size_t>(r)];
-      load_[i] = std::max(next(r), 0.0);
-      removed = removed || next(r) <= 0.0;
-    }
-    if (removed) {
-      std::erase_if(active_, [&](std::size_t i) { return load_[i] <= 0.0; });
-      last_change = std::numeric_limits<double>::infinity();
-      set_checked = false;
-    } else {
-      last_change = loads_known ? (next - loads).cwiseAbs().maxCoeff() / largest : std::numeric_limits<double>::infinity();
-    }
-    loads_known = true;
+    const IterationOutcome outcome = iterate(state, result);
+    approach_m = state.approach_m;
+    if (outcome != IterationOutcome::Continue) return result;  // Converged, or the failure in result.status
   }
   result.status = SolveStatus::MaxIterations;
   return result;
@@ -404,8 +449,8 @@ NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
 double Mim1dSolver::hertz_start_approach(double normal_force_N) const {
   const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
   const double A0 = grid_.A_per_m[deepest];
-  const HertzContact hertz = hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / 20.0), E_star_Pa_, normal_force_N);
-  return grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : 1e-6);
+  const HertzContact hertz = hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / kCurvatureRatioLimit), E_star_Pa_, normal_force_N);
+  return grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : kFallbackStartApproach_m);
 }
 
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
@@ -464,7 +509,7 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     iterations += inner.iterations;
     if (inner.status == SolveStatus::NoContact) {
       lower = approach;
-      approach = std::isfinite(upper) ? 0.5 * (lower + upper) : h_min + 2.0 * (approach - h_min) + 1e-9;
+      approach = std::isfinite(upper) ? 0.5 * (lower + upper) : h_min + kNoContactGrowth * (approach - h_min) + kNoContactNudge_m;
       warm = false;
       continue;
     }
@@ -484,13 +529,13 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     double next = (slope > 0.0 && std::isfinite(slope)) ? approach - mismatch / slope : eq16(force);
     if (!(next > lower && next < upper)) {
       next = std::isfinite(upper) ? 0.5 * (lower + upper) : eq16(force);
-      if (!(next > lower)) next = h_min + 2.0 * (approach - h_min);
+      if (!(next > lower)) next = h_min + kNoContactGrowth * (approach - h_min);
     }
     if (slope_vector.size() == n) {  // warm start along dN/d(delta)
       for (Eigen::Index r = 0; r < n; ++r) {
         const std::size_t i = active_[static_cast<std::size_t>(r)];
         const double predicted = load_[i] + slope_vector(r) * (next - approach);
-        load_[i] = predicted > 0.0 ? predicted : 0.5 * load_[i];
+        load_[i] = predicted > 0.0 ? predicted : kWarmStartShrink * load_[i];
       }
     }
     approach = next;

@@ -24,6 +24,14 @@ double node_slope(const std::vector<double>& y, const std::vector<double>& h, st
 
 }  // namespace
 
+double strip_count(const GapProfile& gap, double strip_width_m) noexcept {
+  if (gap.y_m.empty()) return 0.0;
+  // Edges at multiples of the width from y = 0: centres (k + 1/2) w for k in [first, last].
+  const double first = std::ceil(gap.y_m.front() / strip_width_m - 0.5);
+  const double last = std::floor(gap.y_m.back() / strip_width_m - 0.5);
+  return last - first + 1.0;
+}
+
 StripGrid make_strip_grid(const GapProfile& gap, double strip_width_m) {
   StripGrid grid;
   fill_strip_grid(gap, strip_width_m, grid);
@@ -34,6 +42,12 @@ void fill_strip_grid(const GapProfile& gap, double strip_width_m, StripGrid& gri
   if (!(std::isfinite(strip_width_m) && strip_width_m > 0.0))
     throw InputError("--strip-width", 0, "strip width must be positive and finite, got " + std::to_string(strip_width_m));
   validate(gap);
+  const double strips = strip_count(gap, strip_width_m);
+  if (strips > static_cast<double>(kMaxStripsPerPatch))
+    throw InputError("--strip-width", 0,
+                     "the gap needs " + std::to_string(static_cast<long long>(strips)) + " strips of width " +
+                         std::to_string(strip_width_m) + " m (max " + std::to_string(kMaxStripsPerPatch) +
+                         "): increase the strip width");
   const double y_first = gap.y_m.front(), y_last = gap.y_m.back();
   const auto first = static_cast<long>(std::ceil(y_first / strip_width_m - 0.5));
   const auto last = static_cast<long>(std::floor(y_last / strip_width_m - 0.5));

@@ -1,5 +1,6 @@
 #include "ctab/sweep/table_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "ctab/contact/error.hpp"
 #include "ctab/io/profile_io.hpp"
+#include "ctab/wheelrail/axis_range.hpp"
 
 namespace ctab::gen {
 
@@ -49,12 +51,25 @@ namespace {
 
 std::size_t line_of(const toml::node& node) { return node.source().begin.line; }
 
+//! Per-patch quantities of the table (tables/README.md): 20 scalars per slot, besides the two strip profiles.
+constexpr double kTableScalarsPerSlot = 20.0;
+constexpr double kTableWheels = 2.0;  // both wheels are stored, mirrored or not
+
 class Reader {
  public:
   Reader(const toml::table& root, std::string source) : root_(root), source_(std::move(source)) {}
 
   [[noreturn]] void fail(const toml::node& node, const std::string& key, const std::string& message) const {
     throw InputError(source_, line_of(node), "'" + key + "': " + message);
+  }
+  [[noreturn]] void fail_at(std::size_t line, const std::string& key, const std::string& message) const {
+    throw InputError(source_, line, "'" + key + "': " + message);
+  }
+  //! Line of a key, else of its table's header, else 0.
+  std::size_t line(const std::string& table, const std::string& key) const {
+    if (const toml::node* node = find(table, key)) return line_of(*node);
+    const toml::node* t = root_.get(table);
+    return t ? line_of(*t) : 0;
   }
 
   // Rejects keys and tables outside the schema.
@@ -84,6 +99,24 @@ class Reader {
     fail(*node, table + "." + key, "expected a number");
   }
 
+  //! A number in [low, high] (the range and its unit named in the message).
+  double number_in(const std::string& table, const std::string& key, double fallback, double low, double high,
+                   const std::string& range_text) const {
+    const double value = number(table, key, fallback);
+    if (!(value >= low && value <= high)) fail_at(line(table, key), table + "." + key, "expected " + range_text);
+    return value;
+  }
+
+  //! An integer in [low, high].
+  std::size_t integer_in(const std::string& table, const std::string& key, std::size_t fallback, std::size_t low,
+                         std::size_t high) const {
+    const double value = number(table, key, static_cast<double>(fallback));
+    if (!(value >= static_cast<double>(low) && value <= static_cast<double>(high) && value == std::floor(value)))
+      fail_at(line(table, key), table + "." + key,
+              "expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+    return static_cast<std::size_t>(value);
+  }
+
   std::string text(const std::string& table, const std::string& key, const std::string& fallback) const {
     const toml::node* node = find(table, key);
     if (!node) return fallback;
@@ -96,54 +129,145 @@ class Reader {
     fail(*node, table + "." + key, "expected a string");
   }
 
-  // A number, a non-empty list of numbers, or {start, stop, step} with step > 0 and stop >= start.
+  // A number, a non-empty list of numbers, or {start, stop, step} (validated by make_uniform_axis).
   std::vector<double> axis(const toml::node& node, const std::string& key) const {
-    if (const auto v = node.value<double>()) return {*v};
-    std::vector<double> values;
-    if (const toml::array* list = node.as_array()) {
-      for (const toml::node& item : *list) {
-        const auto v = item.value<double>();
-        if (!v || !std::isfinite(*v)) fail(item, key, "expected a list of numbers");
-        values.push_back(*v);
-      }
-      if (values.empty()) fail(node, key, "empty axis");
-      for (std::size_t i = 1; i < values.size(); ++i)
-        if (!(values[i] > values[i - 1])) fail(node, key, "values must be strictly increasing");
-      return values;
+    if (const auto v = node.value<double>()) {
+      if (!std::isfinite(*v)) fail(node, key, "must be finite");
+      return {*v};
     }
+    if (const toml::array* list = node.as_array()) return axis_list(*list, key);
     const toml::table* range = node.as_table();
     if (!range) fail(node, key, "expected a number, a list of numbers or {start, stop, step}");
-    double start = 0, stop = 0, step = 0;
-    for (const auto& [name, value] : *range) {
-      const std::string part(name.str());
-      const auto v = value.value<double>();
-      if (!v || !std::isfinite(*v)) fail(value, key + "." + part, "expected a number");
-      if (part == "start") start = *v;
-      else if (part == "stop") stop = *v;
-      else if (part == "step") step = *v;
-      else fail(value, key + "." + part, "unknown key (expected start, stop, step)");
-    }
-    for (const char* part : {"start", "stop", "step"})
-      if (!range->get(part)) fail(node, key, std::string("missing '") + part + "'");
-    if (!(step > 0.0)) fail(*range->get("step"), key + ".step", "must be positive");
-    if (stop < start) fail(*range->get("stop"), key + ".stop", "must not be below start (empty axis)");
-    const auto count = static_cast<std::size_t>(std::floor((stop - start) / step + 1e-9)) + 1;
-    if (count > 1000000) fail(node, key, "more than 10^6 values");
-    for (std::size_t i = 0; i < count; ++i) values.push_back(start + step * static_cast<double>(i));
-    // A range symmetric about zero is made exactly antisymmetric (values[n-1-i] = -values[i], 0 in the middle),
-    // so that mirroring one wheel onto the other is exact.
-    if (count > 1 && std::abs(start + values.back()) <= 1e-9 * step)
-      for (std::size_t i = 0; i < count / 2; ++i) {
-        values[count - 1 - i] = -values[i];
-        if (count % 2 == 1) values[count / 2] = 0.0;
-      }
-    return values;
+    return axis_range(*range, key);
   }
 
  private:
+  std::vector<double> axis_list(const toml::array& list, const std::string& key) const {
+    if (list.size() > kMaxAxisPoints) fail(list, key, "more than " + std::to_string(kMaxAxisPoints) + " values");
+    std::vector<double> values;
+    for (const toml::node& item : list) {
+      const auto v = item.value<double>();
+      if (!v || !std::isfinite(*v)) fail(item, key, "expected a list of numbers");
+      values.push_back(*v);
+    }
+    if (values.empty()) fail(list, key, "empty axis");
+    for (std::size_t i = 1; i < values.size(); ++i)
+      if (!(values[i] > values[i - 1])) fail(list, key, "values must be strictly increasing");
+    return values;
+  }
+
+  std::vector<double> axis_range(const toml::table& range, const std::string& key) const {
+    double bounds[3] = {0, 0, 0};  // start, stop, step
+    static constexpr const char* kParts[3] = {"start", "stop", "step"};
+    for (const auto& [name, value] : range) {
+      const std::string part(name.str());
+      const auto v = value.value<double>();
+      if (!v || !std::isfinite(*v)) fail(value, key + "." + part, "expected a finite number");
+      const auto at = std::find(std::begin(kParts), std::end(kParts), part);
+      if (at == std::end(kParts)) fail(value, key + "." + part, "unknown key (expected start, stop, step)");
+      bounds[at - std::begin(kParts)] = *v;
+    }
+    for (const char* part : kParts)
+      if (!range.get(part)) fail(range, key, std::string("missing '") + part + "'");
+    UniformAxis axis = make_uniform_axis(bounds[0], bounds[1], bounds[2]);
+    if (!axis.ok()) {
+      if (axis.part.empty()) fail(range, key, axis.message);
+      fail(*range.get(axis.part), key + "." + axis.part, axis.message);
+    }
+    return std::move(axis.values);
+  }
+
   const toml::table& root_;
   std::string source_;
 };
+
+void read_profiles(const Reader& r, TableConfig& c) {
+  c.wheel = r.text("profiles", "wheel", c.wheel);
+  c.rail = r.text("profiles", "rail", c.rail);
+  c.inclination_text = r.text("profiles", "inclination", c.inclination_text);
+  c.inclination = parse_inclination(c.inclination_text, c.source, c.key_line("profiles.inclination"), "'profiles.inclination'");
+  c.smoothing_length_m = r.number_in("profiles", "smoothing_m", c.smoothing_length_m, 0.0, kMaxSmoothingLength_m,
+                                     "a smoothing length in [0, 0.1] m");
+}
+
+// Plausibility ranges: wide enough for every gauge and wheel in service, narrow enough to catch mm for m.
+void read_track(const Reader& r, TableConfig& c) {
+  TrackSetup& t = c.track;
+  t.gauge_m = r.number_in("track", "gauge_m", t.gauge_m, 0.3, 3.0, "a track gauge in [0.3, 3] m");
+  t.gauge_height_m = r.number_in("track", "gauge_height_m", t.gauge_height_m, 1e-4, 0.05,
+                                 "a gauge measuring height in [1e-4, 0.05] m below the top of the rail");
+  t.flange_back_distance_m = r.number("track", "flange_back_distance_m", t.flange_back_distance_m);
+  if (!(t.flange_back_distance_m > 0.0 && t.flange_back_distance_m < t.gauge_m))
+    r.fail_at(r.line("track", "flange_back_distance_m"), "track.flange_back_distance_m",
+              "expected a positive distance below the gauge (" + std::to_string(t.gauge_m) + " m)");
+  t.flange_back_position_m = r.number_in("track", "flange_back_position_m", t.flange_back_position_m, -0.2, 0.0,
+                                         "a flange-back position S in [-0.2, 0] m (wheel profile coordinate)");
+  t.nominal_radius_m = r.number_in("track", "nominal_radius_m", t.nominal_radius_m, 0.05, 2.0,
+                                   "a nominal rolling radius in [0.05, 2] m");
+}
+
+void read_material(const Reader& r, TableConfig& c) {
+  c.material.youngs_modulus_Pa = r.number("material", "youngs_modulus_Pa", c.material.youngs_modulus_Pa);
+  if (!(c.material.youngs_modulus_Pa > 0.0)) r.fail_at(r.line("material", "youngs_modulus_Pa"), "material.youngs_modulus_Pa", "must be positive");
+  c.material.poisson_ratio = r.number("material", "poisson_ratio", c.material.poisson_ratio);
+  if (!is_valid(c.material)) r.fail_at(r.line("material", "poisson_ratio"), "material.poisson_ratio", "must lie in (-1, 0.5)");
+}
+
+void read_solver(const Reader& r, TableConfig& c) {
+  const std::string mode = r.text("solver", "mode", "wheelset"), method = r.text("solver", "method", "mim1d");
+  if (mode != "wheelset" && mode != "wheel")
+    r.fail(*r.find("solver", "mode"), "solver.mode", "expected \"wheelset\" or \"wheel\", got \"" + mode + "\"");
+  if (method != "mim1d" && method != "hertz")
+    r.fail(*r.find("solver", "method"), "solver.method", "expected \"mim1d\" or \"hertz\", got \"" + method + "\"");
+  c.mode = mode == "wheel" ? ContactMode::SingleWheel : ContactMode::Wheelset;
+  c.method = method == "hertz" ? NormalMethod::Hertz : NormalMethod::Mim1d;
+  c.strip_width_m = r.number_in("solver", "strip_width_m", c.strip_width_m, kMinStripWidth_m, kMaxStripWidth_m,
+                                "a strip width in [1e-05, 0.005] m");
+}
+
+void read_axes(const Reader& r, TableConfig& c) {
+  const toml::node* dy = r.find("axes", "lateral_displacement_m");
+  if (!dy) r.fail_at(r.line("axes", ""), "axes.lateral_displacement_m", "required ({start, stop, step})");
+  if (!dy->is_table()) r.fail(*dy, "axes.lateral_displacement_m", "expected {start, stop, step} (a uniform axis)");
+  c.lateral_displacement_m = r.axis(*dy, "axes.lateral_displacement_m");
+  const toml::node* load_node = nullptr;
+  for (const auto& [kind, key] : {std::pair{LoadKind::VerticalForce, "vertical_load_N"}, std::pair{LoadKind::NormalForce, "normal_load_N"},
+                                  std::pair{LoadKind::Approach, "approach_m"}}) {
+    const toml::node* node = r.find("axes", key);
+    if (!node) continue;
+    if (load_node) r.fail(*node, std::string("axes.") + key, "give only one of vertical_load_N, normal_load_N, approach_m");
+    load_node = node;
+    c.load_kind = kind;
+    c.load_values = r.axis(*node, std::string("axes.") + key);
+    c.second_axis = !node->value<double>().has_value();
+    for (const double v : c.load_values)
+      if (!(v > 0.0)) r.fail(*node, std::string("axes.") + key, "values must be positive");
+  }
+  if (!load_node)
+    r.fail_at(r.line("axes", ""), "axes.vertical_load_N",
+              "missing: give the load as one of vertical_load_N [N], normal_load_N [N] or approach_m [m] "
+              "(a number, a list or {start, stop, step})");
+}
+
+void read_output(const Reader& r, TableConfig& c) {
+  c.strip_samples = r.integer_in("output", "strip_samples", c.strip_samples, 2, 1024);
+  c.patch_slots = r.integer_in("output", "patch_slots", c.patch_slots, 1, kMaxPatchSlots);
+}
+
+// Case count and table size, both before anything is allocated for the table.
+void check_table_size(const Reader& r, const TableConfig& c) {
+  const double cases = static_cast<double>(c.lateral_displacement_m.size()) * static_cast<double>(c.load_values.size());
+  const std::size_t line = r.line("axes", "lateral_displacement_m");
+  if (cases > static_cast<double>(kMaxTableCases))
+    r.fail_at(line, "axes", std::to_string(static_cast<long long>(cases)) + " cases (max " + std::to_string(kMaxTableCases) +
+                                 "): reduce the dy range or increase the step, or use fewer load values");
+  const double bytes = table_memory_bytes(c);
+  if (bytes > kMaxTableBytes)
+    r.fail_at(line, "axes",
+              "the table would take " + std::to_string(bytes / (1024.0 * 1024.0 * 1024.0)) + " GiB (max " +
+                  std::to_string(kMaxTableBytes / (1024.0 * 1024.0 * 1024.0)) +
+                  " GiB): reduce the dy range or increase the step, or reduce strip_samples or patch_slots");
+}
 
 }  // namespace
 
@@ -151,6 +275,12 @@ std::size_t TableConfig::key_line(const std::string& key) const {
   for (const auto& [name, line] : key_lines)
     if (name == key) return line;
   return 0;
+}
+
+double table_memory_bytes(const TableConfig& c) noexcept {
+  const double cases = static_cast<double>(c.lateral_displacement_m.size()) * static_cast<double>(c.load_values.size());
+  const double per_slot = kTableScalarsPerSlot + 2.0 * static_cast<double>(c.strip_samples);
+  return cases * kTableWheels * static_cast<double>(c.patch_slots) * per_slot * sizeof(double);
 }
 
 const char* load_axis_name(LoadKind kind) noexcept {
@@ -182,70 +312,24 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
   for (const auto& [table, node] : root)
     for (const auto& [key, value] : *node.as_table())
       c.key_lines.emplace_back(std::string(table.str()) + "." + std::string(key.str()), line_of(value));
-  c.wheel = r.text("profiles", "wheel", c.wheel);
-  c.rail = r.text("profiles", "rail", c.rail);
-  c.inclination_text = r.text("profiles", "inclination", c.inclination_text);
-  c.inclination = parse_inclination(c.inclination_text, source, c.key_line("profiles.inclination"), "'profiles.inclination'");
-  c.smoothing_length_m = r.number("profiles", "smoothing_m", c.smoothing_length_m);
-  c.track.gauge_m = r.number("track", "gauge_m", c.track.gauge_m);
-  c.track.gauge_height_m = r.number("track", "gauge_height_m", c.track.gauge_height_m);
-  c.track.flange_back_distance_m = r.number("track", "flange_back_distance_m", c.track.flange_back_distance_m);
-  c.track.flange_back_position_m = r.number("track", "flange_back_position_m", c.track.flange_back_position_m);
-  c.track.nominal_radius_m = r.number("track", "nominal_radius_m", c.track.nominal_radius_m);
-  c.material.youngs_modulus_Pa = r.number("material", "youngs_modulus_Pa", c.material.youngs_modulus_Pa);
-  c.material.poisson_ratio = r.number("material", "poisson_ratio", c.material.poisson_ratio);
-  c.strip_width_m = r.number("solver", "strip_width_m", c.strip_width_m);
-  const std::string mode = r.text("solver", "mode", "wheelset"), method = r.text("solver", "method", "mim1d");
-  if (mode != "wheelset" && mode != "wheel")
-    r.fail(*r.find("solver", "mode"), "solver.mode", "expected \"wheelset\" or \"wheel\", got \"" + mode + "\"");
-  if (method != "mim1d" && method != "hertz")
-    r.fail(*r.find("solver", "method"), "solver.method", "expected \"mim1d\" or \"hertz\", got \"" + method + "\"");
-  c.mode = mode == "wheel" ? ContactMode::SingleWheel : ContactMode::Wheelset;
-  c.method = method == "hertz" ? NormalMethod::Hertz : NormalMethod::Mim1d;
-  // Positivity of physical parameters, each named with its line.
-  auto positive = [&](const char* table, const char* key, double value) {
-    if (!(value > 0.0)) {
-      const toml::node* node = r.find(table, key);
-      throw InputError(source, node ? line_of(*node) : 0, std::string("'") + table + "." + key + "': must be positive");
-    }
-  };
-  positive("track", "gauge_m", c.track.gauge_m);
-  positive("track", "gauge_height_m", c.track.gauge_height_m);
-  positive("track", "flange_back_distance_m", c.track.flange_back_distance_m);
-  positive("track", "nominal_radius_m", c.track.nominal_radius_m);
-  positive("material", "youngs_modulus_Pa", c.material.youngs_modulus_Pa);
-  positive("solver", "strip_width_m", c.strip_width_m);
-  if (!(c.smoothing_length_m >= 0.0)) throw InputError(source, c.key_line("profiles.smoothing_m"), "'profiles.smoothing_m': must be >= 0");
-  if (!is_valid(c.material))
-    throw InputError(source, c.key_line("material.poisson_ratio"), "'material.poisson_ratio': must lie in (-1, 0.5)");
-  // Axes.
-  const toml::node* dy = r.find("axes", "lateral_displacement_m");
-  if (!dy) throw InputError(source, 0, "'axes.lateral_displacement_m': required ({start, stop, step})");
-  if (!dy->is_table()) r.fail(*dy, "axes.lateral_displacement_m", "expected {start, stop, step} (a uniform axis)");
-  c.lateral_displacement_m = r.axis(*dy, "axes.lateral_displacement_m");
-  int loads = 0;
-  for (const auto& [kind, key] : {std::pair{LoadKind::VerticalForce, "vertical_load_N"}, std::pair{LoadKind::NormalForce, "normal_load_N"},
-                                  std::pair{LoadKind::Approach, "approach_m"}}) {
-    const toml::node* node = r.find("axes", key);
-    if (!node) continue;
-    ++loads;
-    c.load_kind = kind;
-    c.load_values = r.axis(*node, std::string("axes.") + key);
-    c.second_axis = !node->value<double>().has_value();
-    for (const double v : c.load_values)
-      if (!(v > 0.0)) r.fail(*node, std::string("axes.") + key, "values must be positive");
-  }
-  if (loads > 1) throw InputError(source, c.key_line("axes.approach_m"), "'axes': give one of vertical_load_N, normal_load_N, approach_m");
-  if (loads == 0) c.load_values = {78.5e3};
-  const double samples = r.number("output", "strip_samples", 32.0);
-  if (!(samples >= 2 && samples <= 1024 && samples == std::floor(samples)))
-    throw InputError(source, c.key_line("output.strip_samples"), "'output.strip_samples': expected an integer in [2, 1024]");
-  c.strip_samples = static_cast<std::size_t>(samples);
-  const double slots = r.number("output", "patch_slots", 3.0);
-  if (!(slots >= 1 && slots <= 16 && slots == std::floor(slots)))
-    throw InputError(source, c.key_line("output.patch_slots"), "'output.patch_slots': expected an integer in [1, 16]");
-  c.patch_slots = static_cast<std::size_t>(slots);
+  read_profiles(r, c);
+  read_track(r, c);
+  read_material(r, c);
+  read_solver(r, c);
+  read_axes(r, c);
+  read_output(r, c);
+  check_table_size(r, c);
   return c;
+}
+
+SideGeometry place_profiles(const TableConfig& config, const ProfileTable& wheel, const ProfileTable& rail) {
+  try {
+    return SideGeometry(wheel, rail, config.track);
+  } catch (const InputError& e) {
+    const std::size_t line = config.key_line("track.gauge_height_m");
+    const std::string key = line > 0 ? "track.gauge_height_m" : "profiles.rail";
+    throw InputError(config.source, line > 0 ? line : config.key_line("profiles.rail"), "'" + key + "': " + e.what());
+  }
 }
 
 TableConfig read_table_config(const std::string& path) {

@@ -72,12 +72,10 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   SweepSetup setup;
   setup.wheel = std::make_unique<const ProfileTable>(load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel"));
   setup.rail = std::make_unique<const ProfileTable>(load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail"));
-  setup.side = std::make_unique<const SideGeometry>(*setup.wheel, *setup.rail, config.track);
+  setup.side = std::make_unique<const SideGeometry>(place_profiles(config, *setup.wheel, *setup.rail));
   setup.E_star_Pa = effective_modulus(config.material, config.material);
   setup.options.method = config.method;
-  setup.options.mim1d.strip_width_m = config.strip_width_m;
-  if (!(setup.options.mim1d.strip_width_m > 0.0))
-    throw InputError(config.source, config.key_line("solver.strip_width_m"), "strip width must be positive");
+  setup.options.mim1d.strip_width_m = config.strip_width_m;  // range checked by the config
   setup.mode = config.mode;
   setup.load_kind = config.load_kind;
   (void)StripKernel::instance();  // process-wide tables are built here, not inside a parallel region
@@ -92,9 +90,9 @@ CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m) noexcept {
   if (setup.mode != ContactMode::Wheelset) return {};
   try {
     const WheelsetPose pose = rigid_wheelset_pose(*setup.side, *setup.side, dy_m);
-    return {pose.roll_rad, pose.converged};
+    return {pose.roll_rad, pose.converged, pose.detail};
   } catch (...) {
-    return {0.0, false};
+    return {0.0, false, "the wheelset roll search threw"};
   }
 }
 
@@ -107,6 +105,7 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
                                       setup.options, workspace);
     if (!roll.converged) {
       out.contact.status = SolveStatus::MaxIterations;
+      out.contact.detail = "wheelset roll did not converge: " + roll.detail;
       out.contact.patches.clear();
     }
   } catch (...) {

@@ -3,19 +3,35 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
+#include <utility>
 
 namespace ctab::gen {
 
 RigidContactRow rigid_contact(const SideGeometry& right, const SideGeometry& left, double dy_m, ContactMode mode) {
   RigidContactRow row;
   row.dy_m = dy_m;
-  if (mode == ContactMode::Wheelset) row.roll_rad = rigid_wheelset_pose(right, left, dy_m).roll_rad;
+  if (mode == ContactMode::Wheelset) {
+    WheelsetPose pose = rigid_wheelset_pose(right, left, dy_m);
+    row.roll_rad = pose.roll_rad;
+    row.converged = pose.converged;
+    row.detail = std::move(pose.detail);
+  }
   std::vector<GapMinimum> minima;
   double z = 0.0;
-  right.gap_minima(dy_m, row.roll_rad, minima, z);
-  if (!minima.empty()) row.right = minima.front();
-  left.gap_minima(-dy_m, -row.roll_rad, minima, z);
-  if (!minima.empty()) row.left = minima.front();
+  for (const bool right_side : {true, false}) {
+    if (right_side)
+      right.gap_minima(dy_m, row.roll_rad, minima, z);
+    else
+      left.gap_minima(-dy_m, -row.roll_rad, minima, z);
+    if (!minima.empty()) {
+      (right_side ? row.right : row.left) = minima.front();
+    } else if (row.converged) {
+      row.converged = false;
+      row.detail = std::string(right_side ? "the right" : "the left") + " wheel does not reach its rail at dy = " +
+                   std::to_string(dy_m) + " m (lateral shift beyond the profiles)";
+    }
+  }
   row.rolling_radius_difference_m = row.right.rolling_radius_m - row.left.rolling_radius_m;
   return row;
 }

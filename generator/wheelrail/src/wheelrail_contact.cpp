@@ -3,20 +3,50 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/hertz_strip.hpp"
+#include "ctab/contact/mim1d.hpp"
 #include "ctab/contact/root_finding.hpp"
+#include "ctab/contact/strip_grid.hpp"
 
 namespace ctab::gen {
 
 namespace {
 
-constexpr double kFlangeRootS_m = -0.026;  // S1002 sections C-H (flange) start here
+constexpr double kFlangeRootS_m = -0.026;  // S1002 sections C-H (flange) start here (EN 13715)
+// Patch window (README "Contact search"): h is sampled while h < kWindowFactor x the expected approach, at least
+// kMinimumWindowDepth_m; chosen so that close minima (tread and flange root at dy = 5 mm) share a patch as CONTACT
+// combines them. A contact that reaches the window's end doubles the depth, at most kWindowAttempts times.
+constexpr double kWindowFactor = 2.0;
 constexpr double kMinimumWindowDepth_m = 50e-6;
-constexpr double kWindowFactor = 2.0;  // window depth over the expected approach
+constexpr double kWindowGrowth = 2.0;
+constexpr int kWindowAttempts = 4;
+constexpr int kMaxSamplesPerSide = 4000;       // chosen: 0.4 m at the 0.1 mm sample step, beyond any profile
+constexpr std::size_t kMinPatchSamples = 8;    // chosen: a window with fewer samples cannot hold 3 strips
+// Newton on the wheel parameter S and on the plane-normal intersections: quadratic, 3-5 steps in practice.
+constexpr int kWheelPointSteps = 20;
+constexpr double kWheelPointTolerance_m = 1e-13;
+constexpr int kIntersectionSteps = 30;
+constexpr double kIntersectionTolerance_m = 1e-14;
+// Window sizing only: Hertz at the gap minimum with B >= A/20 (CONTACT's R_y <= 20 R_x) and a cosine floor for
+// steep flanks (cos 87 deg); 0.1 mm when Hertz fails.
+constexpr double kCurvatureRatioLimit = 20.0;
+constexpr double kCosineFloor = 0.05;
+constexpr double kFallbackApproach_m = 1e-4;
+// Several patches: vertical approach by the Illinois root finder to a force tolerance of 10x the solver's.
+constexpr double kSharedApproachTolerance_m = 1e-15;
+constexpr double kSharedForceToleranceFactor = 10.0;
+constexpr int kSharedApproachIterations = 100;
+
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
 
 // One patch's strip problem: the plane tangent to the rail at the reference point.
 struct PatchProblem {
@@ -29,28 +59,34 @@ struct PatchProblem {
   NormalSolution solution;
 };
 
-// Creates the patch's solver, or re-targets the one it already has.
-bool prepare_solver(PatchProblem& p, double E_star, const Mim1dOptions& options) {
+// Creates the patch's MIM-1D solver, or re-targets the one it already has. Returns an empty string, or why not.
+std::string prepare_mim1d_solver(PatchProblem& p, double E_star, const Mim1dOptions& options) {
+  const double strips = strip_count(p.gap, options.strip_width_m);
+  if (!(strips <= static_cast<double>(kMaxStripsPerPatch)))
+    return "patch needs " + number_text(strips) + " strips (max " + std::to_string(kMaxStripsPerPatch) +
+           "): strip width too small";
   try {
     if (p.solver && p.solver->matches(E_star, options))
       p.solver->reset(p.gap);
     else
       p.solver = std::make_unique<Mim1dSolver>(p.gap, E_star, options);
-    return true;
-  } catch (const std::exception&) {
-    return false;
+  } catch (const std::exception& e) {
+    return std::string("MIM-1D set-up: ") + e.what();
   }
+  return {};
 }
 
 class PatchBuilder {
  public:
   PatchBuilder(const SideGeometry& side, double dy, double roll, double z_first)
       : side_(side), dy_(dy), roll_(roll), z_first_(z_first) {}
+  //! z_ws of first contact: the wheel is placed touching the rail.
+  void set_first_contact_height(double z_first) { z_first_ = z_first; }
 
   // Wheel surface (touching position) at rail coordinate y: Newton on S.
   WheelSurfacePoint wheel_at(double y, double& s_guess) const {
     WheelSurfacePoint w = side_.wheel_point(s_guess, dy_, roll_);
-    for (int i = 0; i < 20 && std::abs(w.rail_y_m - y) > 1e-13; ++i) {
+    for (int i = 0; i < kWheelPointSteps && std::abs(w.rail_y_m - y) > kWheelPointTolerance_m; ++i) {
       const double dyds = std::cos(roll_) - side_.wheel().at(s_guess).dz * std::sin(roll_);
       s_guess -= (w.rail_y_m - y) / dyds;
       w = side_.wheel_point(s_guess, dy_, roll_);
@@ -59,39 +95,7 @@ class PatchBuilder {
     return w;
   }
 
-  // Separation along the plane normal at plane coordinate s; false outside the profiles.
-  bool sample(PatchProblem& p, double s, double& n_rail, double& n_wheel, double& s_guess, double& y_rail, double& B,
-              double& A) const {
-    const ProfileTable& rail = side_.rail();
-    for (int i = 0; i < 30; ++i) {  // rail: z_r(y0 + s c - n sn) = z0 + s sn + n c
-      const double y = p.y0 + s * p.c - n_rail * p.sn;
-      if (!rail.contains(y)) return false;
-      const ProfilePoint r = rail.at(y);
-      const double f = r.z - (p.z0 + s * p.sn + n_rail * p.c), df = -r.dz * p.sn - p.c;
-      n_rail -= f / df;
-      if (std::abs(f) < 1e-14) break;
-    }
-    y_rail = p.y0 + s * p.c - n_rail * p.sn;
-    const ProfilePoint r = rail.at(y_rail);
-    WheelSurfacePoint w{};
-    for (int i = 0; i < 30; ++i) {
-      const double y = p.y0 + s * p.c - n_wheel * p.sn;
-      if (!rail.contains(y) || !side_.wheel().contains(s_guess)) return false;
-      w = wheel_at(y, s_guess);
-      const double f = w.z_m - (p.z0 + s * p.sn + n_wheel * p.c), df = -w.slope * p.sn - p.c;
-      n_wheel -= f / df;
-      if (std::abs(f) < 1e-14) break;
-    }
-    if (!side_.wheel().contains(s_guess)) return false;
-    // h'' = kappa (1 + n'^2)^(3/2) for each surface, n' its slope relative to the plane.
-    const double tr = std::tan(std::atan(r.dz) - p.angle), tw = std::tan(std::atan(w.slope) - p.angle);
-    const double gr = 1 + tr * tr, gw = 1 + tw * tw;
-    B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
-    A = p.c / (2.0 * w.radius_m);  // rolling radius seen in the contact plane: r / cos(delta)
-    return true;
-  }
-
-  // Samples h(s) outward from the reference point while h < depth.
+  // Samples h(s) outward from the reference point while h < depth; false if fewer than kMinPatchSamples.
   bool build(PatchProblem& p, double depth, double step) const {
     p.angle = p.reference.contact_angle_rad;
     p.c = std::cos(p.angle);
@@ -101,28 +105,80 @@ class PatchBuilder {
     p.gap.source = "wheel-rail patch";
     for (std::vector<double>* v : {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y}) v->clear();
     // Towards -s first (then reversed), then from s = 0 towards +s: the samples come out in increasing s.
-    for (int direction = -1; direction <= 1; direction += 2) {
-      double n_rail = 0, n_wheel = 0, s_guess = p.reference.wheel_s_m;
-      for (int k = (direction < 0 ? 1 : 0);; ++k) {
-        const double s = direction * step * k;
-        double y = 0, B = 0, A = 0;
-        if (!sample(p, s, n_rail, n_wheel, s_guess, y, B, A)) break;
-        const double h = n_rail - n_wheel;
-        p.gap.y_m.push_back(s);
-        p.gap.h_m.push_back(h);
-        p.gap.A_per_m.push_back(A);
-        p.gap.B_per_m.push_back(B);
-        p.rail_y.push_back(y);
-        if (h > depth || k > 4000) break;
-      }
-      if (direction < 0)
-        for (std::vector<double>* v : {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y})
-          std::reverse(v->begin(), v->end());
-    }
-    return p.gap.size() >= 8;
+    sample_side(p, -1, depth, step);
+    for (std::vector<double>* v : {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y})
+      std::reverse(v->begin(), v->end());
+    sample_side(p, +1, depth, step);
+    return p.gap.size() >= kMinPatchSamples;
   }
 
  private:
+  struct PlaneSample {
+    double h = 0, y_rail = 0, A = 0, B = 0;
+  };
+  // Newton state carried from sample to sample along one side.
+  struct SampleState {
+    double n_rail = 0, n_wheel = 0, s_guess = 0;
+  };
+
+  void sample_side(PatchProblem& p, int direction, double depth, double step) const {
+    SampleState state{0, 0, p.reference.wheel_s_m};
+    for (int k = (direction < 0 ? 1 : 0);; ++k) {
+      const double s = direction * step * k;
+      PlaneSample sample;
+      if (!sample_at(p, s, state, sample)) break;
+      p.gap.y_m.push_back(s);
+      p.gap.h_m.push_back(sample.h);
+      p.gap.A_per_m.push_back(sample.A);
+      p.gap.B_per_m.push_back(sample.B);
+      p.rail_y.push_back(sample.y_rail);
+      if (sample.h > depth || k > kMaxSamplesPerSide) break;
+    }
+  }
+
+  // Separation along the plane normal at plane coordinate s; false outside the profiles.
+  bool sample_at(const PatchProblem& p, double s, SampleState& state, PlaneSample& out) const {
+    if (!intersect_rail(p, s, state.n_rail)) return false;
+    out.y_rail = p.y0 + s * p.c - state.n_rail * p.sn;
+    const ProfilePoint r = side_.rail().at(out.y_rail);
+    WheelSurfacePoint w{};
+    if (!intersect_wheel(p, s, state, w)) return false;
+    // h'' = kappa (1 + n'^2)^(3/2) for each surface, n' its slope relative to the plane.
+    const double tr = std::tan(std::atan(r.dz) - p.angle), tw = std::tan(std::atan(w.slope) - p.angle);
+    const double gr = 1 + tr * tr, gw = 1 + tw * tw;
+    out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
+    out.A = p.c / (2.0 * w.radius_m);  // rolling radius seen in the contact plane: r / cos(delta)
+    out.h = state.n_rail - state.n_wheel;
+    return true;
+  }
+
+  // Rail: z_r(y0 + s c - n sn) = z0 + s sn + n c, Newton on n.
+  bool intersect_rail(const PatchProblem& p, double s, double& n_rail) const {
+    const ProfileTable& rail = side_.rail();
+    for (int i = 0; i < kIntersectionSteps; ++i) {
+      const double y = p.y0 + s * p.c - n_rail * p.sn;
+      if (!rail.contains(y)) return false;
+      const ProfilePoint r = rail.at(y);
+      const double f = r.z - (p.z0 + s * p.sn + n_rail * p.c), df = -r.dz * p.sn - p.c;
+      n_rail -= f / df;
+      if (std::abs(f) < kIntersectionTolerance_m) break;
+    }
+    return true;
+  }
+
+  // Wheel: the same for the wheel surface; `w` is the last wheel point evaluated.
+  bool intersect_wheel(const PatchProblem& p, double s, SampleState& state, WheelSurfacePoint& w) const {
+    for (int i = 0; i < kIntersectionSteps; ++i) {
+      const double y = p.y0 + s * p.c - state.n_wheel * p.sn;
+      if (!side_.rail().contains(y) || !side_.wheel().contains(state.s_guess)) return false;
+      w = wheel_at(y, state.s_guess);
+      const double f = w.z_m - (p.z0 + s * p.sn + state.n_wheel * p.c), df = -w.slope * p.sn - p.c;
+      state.n_wheel -= f / df;
+      if (std::abs(f) < kIntersectionTolerance_m) break;
+    }
+    return side_.wheel().contains(state.s_guess);
+  }
+
   const SideGeometry& side_;
   double dy_, roll_, z_first_;
 };
@@ -141,9 +197,27 @@ double expected_approach(const SideGeometry& side, const GapMinimum& m, double d
   if (load == LoadKind::Approach) return value * c;
   const WheelSurfacePoint w = side.wheel_point(m.wheel_s_m, dy, roll);
   const double A = c / (2.0 * w.radius_m);
-  const double B = std::max(0.5 * (side.rail().at(m.rail_y_m).curvature() - w.curvature), A / 20.0);
-  const HertzContact h = hertz_from_load(A, B, E_star, load == LoadKind::VerticalForce ? value / std::max(c, 0.05) : value);
-  return h.status == SolveStatus::Converged ? h.approach_m : 1e-4;
+  const double B = std::max(0.5 * (side.rail().at(m.rail_y_m).curvature() - w.curvature), A / kCurvatureRatioLimit);
+  const double force = load == LoadKind::VerticalForce ? value / std::max(c, kCosineFloor) : value;
+  const HertzContact h = hertz_from_load(A, B, E_star, force);
+  return h.status == SolveStatus::Converged ? h.approach_m : kFallbackApproach_m;
+}
+
+// Why a patch's normal solve failed, in words.
+std::string patch_failure(NormalMethod method, const NormalSolution& solution, std::size_t slot) {
+  const std::string at = " at patch " + std::to_string(slot + 1);
+  const char* solver = method == NormalMethod::Hertz ? "Hertz" : "MIM-1D";
+  switch (solution.status) {
+    case SolveStatus::MaxIterations:
+      return std::string(solver) + " did not converge in " + std::to_string(solution.iterations) + " iterations" + at;
+    case SolveStatus::InvalidInput:
+      return std::string(solver) + " rejected the strip problem" + at + " (non-finite input or curvature out of range)";
+    case SolveStatus::NumericalFailure:
+      return std::string(solver) + " failed numerically" + at + " (singular system or non-finite value)";
+    case SolveStatus::ZoneTruncated:
+      return "the contact reaches the end of the window" + at + " (the profiles end inside the contact)";
+    default: return std::string(status_name(solution.status)) + at;
+  }
 }
 
 }  // namespace
@@ -166,158 +240,273 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
   return solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace);
 }
 
-WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
-                                 double load_value, const WheelRailOptions& options, WheelContactWorkspace& workspace) {
-  const auto start = std::chrono::steady_clock::now();
-  WheelContactWorkspace::Impl& ws = workspace.impl();
-  ws.used = 0;
-  WheelContact result;
-  result.dy_m = dy_m;
-  result.roll_rad = roll_rad;
-  auto finish = [&](SolveStatus status) {
-    result.status = status;
-    if (!is_success(status)) result.patches.clear();
-    result.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
-  };
-  if (!(std::isfinite(dy_m) && std::isfinite(roll_rad) && std::isfinite(load_value) && load_value >= 0.0))
-    return finish(SolveStatus::InvalidInput);
-  std::vector<GapMinimum>& minima = ws.minima;
-  double z_first = 0.0;
-  side.gap_minima(dy_m, roll_rad, minima, z_first);
-  if (minima.empty() || !std::isfinite(z_first)) return finish(SolveStatus::InvalidInput);
-  result.first_contact_z_m = z_first + side.track().nominal_radius_m;
-  result.rigid_contact = minima[0];
-  if (load_value == 0.0) {
-    result.near_misses = minima;
-    return finish(SolveStatus::NoContact);
+namespace {
+
+// One wheel-rail case: the steps of solve_wheel_contact, sharing the case's inputs, result and workspace.
+class WheelCase {
+ public:
+  WheelCase(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load, double load_value,
+            const WheelRailOptions& options, WheelContactWorkspace::Impl& workspace)
+      : side_(side), dy_(dy_m), roll_(roll_rad), E_star_(E_star_Pa), load_(load), value_(load_value), options_(options),
+        ws_(workspace), builder_(side, dy_m, roll_rad, 0.0) {}
+
+  WheelContact solve() {
+    ws_.used = 0;
+    result_.dy_m = dy_;
+    result_.roll_rad = roll_;
+    if (std::string why = invalid_input(); !why.empty()) return finish(SolveStatus::InvalidInput, std::move(why));
+    if (!find_rigid_contact())
+      return finish(SolveStatus::InvalidInput, "the wheel does not reach the rail at dy = " + number_text(dy_) +
+                                                   " m, roll = " + number_text(roll_) +
+                                                   " rad (lateral shift beyond the profiles)");
+    if (value_ == 0.0) {
+      result_.near_misses = ws_.minima;
+      return finish(SolveStatus::NoContact);
+    }
+    if (const SolveStatus status = solve_in_growing_window(); status != SolveStatus::Converged)
+      return finish(status, std::move(detail_));
+    const SolveStatus status = collect_patches();
+    collect_near_misses();
+    return finish(status, std::move(detail_));
   }
-  const PatchBuilder builder(side, dy_m, roll_rad, z_first);
-  // At most one patch per gap minimum: size the pool now so that references into it stay valid.
-  if (ws.pool.size() < minima.size()) ws.pool.resize(minima.size());
-  // Window depth: twice the expected approach; doubled when a contact reaches the window's end.
-  double depth = std::max(kWindowFactor * expected_approach(side, minima[0], dy_m, roll_rad, E_star_Pa, load, load_value),
-                          kMinimumWindowDepth_m);
-  auto inside_window = [&](const GapMinimum& m) {
-    for (std::size_t k = 0; k < ws.used; ++k) {
-      const PatchProblem& p = ws.pool[k];
+
+ private:
+  std::string invalid_input() const {
+    if (!std::isfinite(dy_)) return "lateral shift dy is not finite";
+    if (!std::isfinite(roll_)) return "roll angle is not finite";
+    if (!std::isfinite(value_)) return "load is not finite";
+    if (value_ < 0.0) return load_ == LoadKind::Approach ? "negative approach" : "negative load";
+    return {};
+  }
+
+  // Gap minima and the height of first contact; false when the wheel is not over the rail.
+  bool find_rigid_contact() {
+    double z_first = 0.0;
+    side_.gap_minima(dy_, roll_, ws_.minima, z_first);
+    if (ws_.minima.empty() || !std::isfinite(z_first)) return false;
+    result_.first_contact_z_m = z_first + side_.track().nominal_radius_m;
+    result_.rigid_contact = ws_.minima[0];
+    builder_.set_first_contact_height(z_first);
+    // At most one patch per gap minimum: size the pool now so that references into it stay valid.
+    if (ws_.pool.size() < ws_.minima.size()) ws_.pool.resize(ws_.minima.size());
+    return true;
+  }
+
+  // Solves in a window that doubles while the main contact reaches its end. Converged, or the failure (with
+  // detail_); a contact still truncated after kWindowAttempts is left for collect_patches to report.
+  SolveStatus solve_in_growing_window() {
+    double depth = std::max(kWindowFactor * expected_approach(side_, ws_.minima[0], dy_, roll_, E_star_, load_, value_),
+                            kMinimumWindowDepth_m);
+    for (int attempt = 0; attempt < kWindowAttempts; ++attempt) {
+      const SolveStatus status = solve_main_patch(depth);
+      if (status == SolveStatus::ZoneTruncated) {
+        depth *= kWindowGrowth;
+        continue;
+      }
+      if (status != SolveStatus::Converged) return status;
+      open_further_patches(depth);
+      return solve_further_patches();
+    }
+    detail_ = "the contact reaches the end of the window after " + std::to_string(kWindowAttempts) +
+              " widenings (depth " + number_text(depth / kWindowGrowth) + " m): the profiles end inside the contact";
+    return SolveStatus::Converged;
+  }
+
+  // The deepest minimum's patch on its own: the loading condition maps directly onto its strip problem.
+  SolveStatus solve_main_patch(double depth) {
+    ws_.used = 0;
+    PatchProblem& main = ws_.acquire();
+    main.reference = ws_.minima[0];
+    if (!builder_.build(main, depth, options_.sample_step_m)) {
+      detail_ = "the patch window at rail y = " + number_text(main.reference.rail_y_m) + " m has fewer than " +
+                std::to_string(kMinPatchSamples) + " samples (contact at the end of a profile)";
+      return SolveStatus::InvalidInput;
+    }
+    if (!prepare(main)) return SolveStatus::InvalidInput;
+    if (load_ == LoadKind::Approach) {
+      result_.vertical_approach_m = value_;
+      solve_patch_at(main, value_);
+    } else {
+      const double force = load_ == LoadKind::VerticalForce ? value_ / main.c : value_;
+      main.solution = options_.method == NormalMethod::Hertz
+                          ? solve_hertz_for_load(main.gap, E_star_, options_.mim1d.strip_width_m, force)
+                          : main.solver->solve_for_load(force);
+      result_.iterations += main.solution.iterations;
+      result_.vertical_approach_m = main.solution.approach_m / main.c;
+    }
+    const SolveStatus status = main.solution.status;
+    if (!is_success(status) && status != SolveStatus::ZoneTruncated) detail_ = patch_failure(options_.method, main.solution, 0);
+    return is_success(status) ? SolveStatus::Converged : status;
+  }
+
+  // The Hertz path needs no strip solver; MIM-1D gets one per patch (reused from case to case).
+  bool prepare(PatchProblem& p) {
+    if (options_.method == NormalMethod::Hertz) return true;
+    detail_ = prepare_mim1d_solver(p, E_star_, options_.mim1d);
+    return detail_.empty();
+  }
+
+  // Further patches: minima outside every window whose gap the approach closes.
+  void open_further_patches(double depth) {
+    for (std::size_t k = 1; k < ws_.minima.size(); ++k) {
+      const GapMinimum& m = ws_.minima[k];
+      if (m.gap_m >= result_.vertical_approach_m || inside_window(m)) continue;
+      PatchProblem& extra = ws_.acquire();
+      extra.reference = m;
+      if (!builder_.build(extra, m.gap_m + depth, options_.sample_step_m) || !prepare(extra)) --ws_.used;  // give the slot back
+    }
+    detail_.clear();  // a minimum that could not open a patch stays a near miss
+  }
+
+  // With several patches a prescribed force is shared through one vertical approach (root finder).
+  SolveStatus solve_further_patches() {
+    if (ws_.used < 2) return SolveStatus::Converged;
+    if (load_ == LoadKind::Approach) {
+      for (std::size_t k = 1; k < ws_.used; ++k) solve_patch_at(ws_.pool[k], value_);
+      return SolveStatus::Converged;
+    }
+    auto mismatch = [&](double dz) { return load_at(dz) - value_; };
+    const double hi = result_.vertical_approach_m;
+    const RootResult root = find_root_bracketed(mismatch, 0.0, -value_, hi, mismatch(hi), kSharedApproachTolerance_m,
+                                                options_.mim1d.tolerance * value_ * kSharedForceToleranceFactor,
+                                                kSharedApproachIterations);
+    if (!root.converged) {
+      detail_ = "the vertical approach shared by " + std::to_string(ws_.used) + " patches did not converge in " +
+                std::to_string(kSharedApproachIterations) + " root-finding steps";
+      return SolveStatus::MaxIterations;
+    }
+    result_.vertical_approach_m = root.x;
+    (void)load_at(root.x);
+    return SolveStatus::Converged;
+  }
+
+  // Total normal or vertical load of all patches at vertical approach dz [N].
+  double load_at(double dz) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < ws_.used; ++k) {
+      PatchProblem& p = ws_.pool[k];
+      solve_patch_at(p, dz);
+      const double n = is_success(p.solution.status) ? p.solution.normal_load_N : 0.0;
+      sum += load_ == LoadKind::VerticalForce ? n * p.c : n;
+    }
+    return sum;
+  }
+
+  void solve_patch_at(PatchProblem& p, double vertical_approach) {
+    const double approach = vertical_approach * p.c;
+    if (options_.method == NormalMethod::Hertz)
+      p.solution = solve_hertz_for_approach(p.gap, E_star_, options_.mim1d.strip_width_m, approach);
+    else
+      p.solution = p.solver->solve_for_approach(approach);
+    result_.iterations += p.solution.iterations;
+  }
+
+  bool inside_window(const GapMinimum& m) const {
+    for (std::size_t k = 0; k < ws_.used; ++k) {
+      const PatchProblem& p = ws_.pool[k];
       if (!p.rail_y.empty() && m.rail_y_m >= p.rail_y.front() && m.rail_y_m <= p.rail_y.back()) return true;
     }
     return false;
-  };
-  auto solve_patch = [&](PatchProblem& p, double vertical_approach) {
-    const double approach = vertical_approach * p.c;
-    if (options.method == NormalMethod::Hertz)
-      p.solution = solve_hertz_for_approach(p.gap, E_star_Pa, options.mim1d.strip_width_m, approach);
-    else
-      p.solution = p.solver->solve_for_approach(approach);
-    result.iterations += p.solution.iterations;
-  };
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    ws.used = 0;
-    PatchProblem& main = ws.acquire();
-    main.reference = minima[0];
-    if (!builder.build(main, depth, options.sample_step_m)) return finish(SolveStatus::InvalidInput);
-    if (!prepare_solver(main, E_star_Pa, options.mim1d)) return finish(SolveStatus::InvalidInput);
-    // Single patch first: the loading condition maps directly onto the strip problem.
-    if (load == LoadKind::Approach) {
-      result.vertical_approach_m = load_value;
-      solve_patch(main, load_value);
-    } else {
-      const double force = load == LoadKind::VerticalForce ? load_value / main.c : load_value;
-      main.solution = options.method == NormalMethod::Hertz
-                          ? solve_hertz_for_load(main.gap, E_star_Pa, options.mim1d.strip_width_m, force)
-                          : main.solver->solve_for_load(force);
-      result.iterations += main.solution.iterations;
-      result.vertical_approach_m = main.solution.approach_m / main.c;
-    }
-    if (main.solution.status == SolveStatus::ZoneTruncated) {
-      depth *= 2.0;
-      continue;
-    }
-    if (!is_success(main.solution.status)) return finish(main.solution.status);
-    // Further patches whose gap the approach closes.
-    for (std::size_t k = 1; k < minima.size(); ++k) {
-      if (minima[k].gap_m >= result.vertical_approach_m || inside_window(minima[k])) continue;
-      PatchProblem& extra = ws.acquire();
-      extra.reference = minima[k];
-      if (!builder.build(extra, minima[k].gap_m + depth, options.sample_step_m) ||
-          !prepare_solver(extra, E_star_Pa, options.mim1d))
-        --ws.used;  // give the slot back
-    }
-    if (ws.used > 1 && load != LoadKind::Approach) {
-      auto total = [&](double dz) {
-        double sum = 0.0;
-        for (std::size_t k = 0; k < ws.used; ++k) {
-          PatchProblem& p = ws.pool[k];
-          solve_patch(p, dz);
-          const double n = is_success(p.solution.status) ? p.solution.normal_load_N : 0.0;
-          sum += load == LoadKind::VerticalForce ? n * p.c : n;
-        }
-        return sum - load_value;
-      };
-      const double hi = result.vertical_approach_m;
-      const RootResult root = find_root_bracketed(total, 0.0, -load_value, hi, total(hi), 1e-15,
-                                                  options.mim1d.tolerance * load_value * 10.0, 100);
-      if (!root.converged) return finish(SolveStatus::MaxIterations);
-      result.vertical_approach_m = root.x;
-      (void)total(root.x);
-    } else if (ws.used > 1) {
-      for (std::size_t k = 1; k < ws.used; ++k) solve_patch(ws.pool[k], load_value);
-    }
-    break;
   }
-  // Collect the patches.
-  SolveStatus status = SolveStatus::Converged;
-  for (std::size_t slot = 0; slot < ws.used; ++slot) {
-    PatchProblem& p = ws.pool[slot];
-    if (p.solution.status == SolveStatus::NoContact) continue;
-    if (!is_success(p.solution.status)) status = p.solution.status;
-    for (const PatchSolution& ps : p.solution.patches) {
-      ContactPatch out;
-      // Contact point of this run: its deepest rigid point (the reference minimum for the run that holds it).
-      std::size_t deepest = p.gap.size();
-      for (std::size_t i = 0; i < p.gap.size(); ++i)
-        if (p.gap.y_m[i] >= ps.y_min_m && p.gap.y_m[i] <= ps.y_max_m && (deepest == p.gap.size() || p.gap.h_m[i] < p.gap.h_m[deepest]))
-          deepest = i;
-      const bool holds_reference = ps.y_min_m <= 0.0 && ps.y_max_m >= 0.0;
-      GapMinimum point = p.reference;
-      if (!holds_reference && deepest < p.gap.size()) {
-        double s_guess = p.reference.wheel_s_m;
-        point.rail_y_m = p.rail_y[deepest];
-        (void)builder.wheel_at(point.rail_y_m, s_guess);
-        point.wheel_s_m = s_guess;
-        point.rolling_radius_m = side.track().nominal_radius_m + side.wheel().at(s_guess).z;
+
+  // Every loaded run of strips of every patch becomes a ContactPatch; the status is the last failing patch's.
+  SolveStatus collect_patches() {
+    SolveStatus status = SolveStatus::Converged;
+    for (std::size_t slot = 0; slot < ws_.used; ++slot) {
+      const PatchProblem& p = ws_.pool[slot];
+      if (p.solution.status == SolveStatus::NoContact) continue;
+      if (!is_success(p.solution.status)) {
+        status = p.solution.status;
+        if (detail_.empty() || p.solution.status != SolveStatus::ZoneTruncated) detail_ = patch_failure(options_.method, p.solution, slot);
       }
-      out.zone = point.wheel_s_m > kFlangeRootS_m ? "tread" : "flange";
-      out.normal_force_N = ps.normal_force_N;
-      out.area_m2 = ps.area_m2;
-      out.max_pressure_Pa = ps.max_pressure_Pa;
-      out.approach_m = p.solution.approach_m;
-      out.plane_angle_rad = p.angle;
-      out.y_rail_m = point.rail_y_m;
-      out.y_wheel_m = point.wheel_s_m;
-      out.rolling_radius_m = point.rolling_radius_m;
-      out.y_cop_rail_m = interpolate(p.gap.y_m, p.rail_y, ps.centre_of_pressure_y_m);
-      out.s_min_m = ps.y_min_m;
-      out.s_max_m = ps.y_max_m;
-      // Contact angle: direction of the resultant normal force, the load-weighted mean of the rail normals.
-      double weighted_angle = 0.0;
-      for (const StripSolution& st : ps.strips) {
-        const double y = interpolate(p.gap.y_m, p.rail_y, st.y_m);
-        out.strips.push_back({st.y_m, y, st.half_length_m, st.p0_Pa});
-        weighted_angle += st.load_N * std::atan(side.rail().at(y).dz);
-      }
-      out.contact_angle_rad = weighted_angle / ps.normal_force_N;
-      result.normal_force_N += out.normal_force_N;
-      result.vertical_force_N += out.normal_force_N * std::cos(out.plane_angle_rad);
-      result.patches.push_back(std::move(out));
+      for (const PatchSolution& ps : p.solution.patches) add_patch(p, ps);
     }
+    if (result_.patches.empty() && status == SolveStatus::Converged) {
+      detail_ = "no loaded strip in any patch";
+      status = SolveStatus::NumericalFailure;
+    }
+    return status;
   }
-  for (std::size_t k = 1; k < minima.size(); ++k)
-    if (minima[k].gap_m >= result.vertical_approach_m && !inside_window(minima[k])) result.near_misses.push_back(minima[k]);
-  if (result.patches.empty() && status == SolveStatus::Converged) status = SolveStatus::NumericalFailure;
-  return finish(status);
+
+  void add_patch(const PatchProblem& p, const PatchSolution& ps) {
+    const GapMinimum point = contact_point(p, ps);
+    ContactPatch out;
+    out.zone = point.wheel_s_m > kFlangeRootS_m ? "tread" : "flange";
+    out.normal_force_N = ps.normal_force_N;
+    out.area_m2 = ps.area_m2;
+    out.max_pressure_Pa = ps.max_pressure_Pa;
+    out.approach_m = p.solution.approach_m;
+    out.plane_angle_rad = p.angle;
+    out.y_rail_m = point.rail_y_m;
+    out.y_wheel_m = point.wheel_s_m;
+    out.rolling_radius_m = point.rolling_radius_m;
+    out.y_cop_rail_m = interpolate(p.gap.y_m, p.rail_y, ps.centre_of_pressure_y_m);
+    out.s_min_m = ps.y_min_m;
+    out.s_max_m = ps.y_max_m;
+    // Contact angle: direction of the resultant normal force, the load-weighted mean of the rail normals.
+    double weighted_angle = 0.0;
+    for (const StripSolution& st : ps.strips) {
+      const double y = interpolate(p.gap.y_m, p.rail_y, st.y_m);
+      out.strips.push_back({st.y_m, y, st.half_length_m, st.p0_Pa});
+      weighted_angle += st.load_N * std::atan(side_.rail().at(y).dz);
+    }
+    out.contact_angle_rad = weighted_angle / ps.normal_force_N;
+    result_.normal_force_N += out.normal_force_N;
+    result_.vertical_force_N += out.normal_force_N * std::cos(out.plane_angle_rad);
+    result_.patches.push_back(std::move(out));
+  }
+
+  // Contact point of a run of strips: its deepest rigid point (the reference minimum for the run that holds it).
+  GapMinimum contact_point(const PatchProblem& p, const PatchSolution& ps) const {
+    std::size_t deepest = p.gap.size();
+    for (std::size_t i = 0; i < p.gap.size(); ++i)
+      if (p.gap.y_m[i] >= ps.y_min_m && p.gap.y_m[i] <= ps.y_max_m && (deepest == p.gap.size() || p.gap.h_m[i] < p.gap.h_m[deepest]))
+        deepest = i;
+    const bool holds_reference = ps.y_min_m <= 0.0 && ps.y_max_m >= 0.0;
+    GapMinimum point = p.reference;
+    if (!holds_reference && deepest < p.gap.size()) {
+      double s_guess = p.reference.wheel_s_m;
+      point.rail_y_m = p.rail_y[deepest];
+      (void)builder_.wheel_at(point.rail_y_m, s_guess);
+      point.wheel_s_m = s_guess;
+      point.rolling_radius_m = side_.track().nominal_radius_m + side_.wheel().at(s_guess).z;
+    }
+    return point;
+  }
+
+  void collect_near_misses() {
+    for (std::size_t k = 1; k < ws_.minima.size(); ++k)
+      if (ws_.minima[k].gap_m >= result_.vertical_approach_m && !inside_window(ws_.minima[k]))
+        result_.near_misses.push_back(ws_.minima[k]);
+  }
+
+  WheelContact finish(SolveStatus status, std::string detail = {}) {
+    result_.status = status;
+    if (!is_success(status)) {
+      result_.patches.clear();
+      result_.detail = detail.empty() ? status_name(status) : std::move(detail);
+    }
+    result_.solve_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return std::move(result_);
+  }
+
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  const SideGeometry& side_;
+  double dy_, roll_, E_star_;
+  LoadKind load_;
+  double value_;
+  const WheelRailOptions& options_;
+  WheelContactWorkspace::Impl& ws_;
+  PatchBuilder builder_;
+  WheelContact result_;
+  std::string detail_;  // why the case failed (empty while it has not)
+};
+
+}  // namespace
+
+WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
+                                 double load_value, const WheelRailOptions& options, WheelContactWorkspace& workspace) {
+  return WheelCase(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace.impl()).solve();
 }
 
 }  // namespace ctab::gen

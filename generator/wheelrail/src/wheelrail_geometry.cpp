@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "ctab/contact/error.hpp"
 #include "ctab/contact/root_finding.hpp"
@@ -62,6 +64,10 @@ static void coarse_minima(const SideGeometry& side, double dy_m, double roll_rad
                           double& step, double& s_begin, double& s_end) {
   out.clear();
   side.overlap(dy_m, roll_rad, s_begin, s_end);
+  // No overlap (the wheel lies beside the rail: the clipped range collapses onto one end): no minimum at all.
+  if (side.wheel_point(s_begin, dy_m, roll_rad).rail_y_m > side.rail().y_max() ||
+      side.wheel_point(s_end, dy_m, roll_rad).rail_y_m < side.rail().y_min())
+    return;
   const auto count = static_cast<std::size_t>((s_end - s_begin) / SideGeometry::kScanStep_m) + 1;
   step = (s_end - s_begin) / static_cast<double>(std::max<std::size_t>(count - 1, 1));
   double previous2 = 0, previous = 0;
@@ -130,6 +136,34 @@ double SideGeometry::first_contact_height(double dy_m, double roll_rad) const {
   return lowest;
 }
 
+namespace {
+
+// Roll iteration (rigid_wheelset_pose): the bracket starts at +-20 mrad (chosen: covers |dy| <= 12 mm on S1002/UIC60,
+// measured up to 3 mrad) and doubles up to kRollBracketWidenings times (+-320 mrad, far beyond a wheelset on its rails).
+constexpr double kInitialRollBracket_rad = 0.02;
+constexpr int kRollBracketWidenings = 4;
+constexpr double kRollTolerance_rad = 1e-13;
+constexpr double kHeightTolerance_m = 1e-12;  // z_ws of the two wheels agree to this
+constexpr int kRollIterations = 100;
+
+std::string shift_text(double dy_m) {
+  char text[48];
+  std::snprintf(text, sizeof text, "dy = %.6g m", dy_m);
+  return text;
+}
+
+// Why the roll iteration failed, in words.
+std::string roll_failure(double dy_m, double f_lo, double f_hi, double bracket_rad) {
+  if (!std::isfinite(f_lo) || !std::isfinite(f_hi))
+    return "wheelset roll: a wheel does not reach its rail at " + shift_text(dy_m) + " (lateral shift beyond the profiles)";
+  if ((f_lo > 0.0) == (f_hi > 0.0))
+    return "wheelset roll: no roll angle within +-" + std::to_string(bracket_rad) + " rad lets both wheels touch at " +
+           shift_text(dy_m);
+  return "wheelset roll: did not converge in " + std::to_string(kRollIterations) + " steps at " + shift_text(dy_m);
+}
+
+}  // namespace
+
 WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& left, double dy_m) {
   WheelsetPose pose;
   pose.dy_m = dy_m;
@@ -143,18 +177,19 @@ WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& 
     heights(roll, zr, zl);
     return zr - zl;
   };
-  double lo = -0.02, hi = 0.02;
+  double lo = -kInitialRollBracket_rad, hi = kInitialRollBracket_rad;
   double f_lo = mismatch(lo), f_hi = mismatch(hi);
-  for (int widen = 0; widen < 4 && (f_lo > 0.0) == (f_hi > 0.0); ++widen) {
+  for (int widen = 0; widen < kRollBracketWidenings && (f_lo > 0.0) == (f_hi > 0.0); ++widen) {
     lo *= 2.0;
     hi *= 2.0;
     f_lo = mismatch(lo);
     f_hi = mismatch(hi);
   }
-  const RootResult root = find_root_bracketed(mismatch, lo, f_lo, hi, f_hi, 1e-13, 1e-12, 100);
+  const RootResult root = find_root_bracketed(mismatch, lo, f_lo, hi, f_hi, kRollTolerance_rad, kHeightTolerance_m, kRollIterations);
   pose.converged = root.converged;
   pose.roll_rad = root.x;
   heights(pose.roll_rad, pose.z_right_m, pose.z_left_m);
+  if (!pose.converged) pose.detail = roll_failure(dy_m, f_lo, f_hi, hi);
   return pose;
 }
 

@@ -61,8 +61,38 @@ class Mim1dSolver {
     int iterations = 0;
     double residual = 0.0;
   };
+  //! State of the inner iteration (Figure 3, with Newton steps).
+  struct InnerState {
+    double approach_m;            // current approach [m] (an unknown when a load is prescribed)
+    const double* target_load_N;  // prescribed total load [N], or null
+    double h_min;                 // deepest separation of the grid [m]
+    double last_change = std::numeric_limits<double>::infinity();  // relative load change of the last step
+    bool set_checked = false;     // Eq. 4 checked since the active set last changed
+    std::size_t growth = 0;       // admission reach, in strips
+  };
+  enum class SetCheck { Iterate, Check, CheckAndFinish };
+  enum class IterationOutcome { Continue, Converged, Failed };
   //! Solves for the approach (in/out) or, with a target load, for both loads and approach.
   InnerResult solve_inner(double& approach_m, bool warm_start, const double* target_load_N);
+  //! One iteration: residual, Eq. 4 check and admissions, then a Newton or fixed-point step.
+  IterationOutcome iterate(InnerState& state, InnerResult& result);
+  //! Loads to start from: the warm-started set (strips that still interpenetrate) or ANALYN's zone.
+  bool start_loads(double approach_m, bool warm_start);
+  [[nodiscard]] bool active_compliances_valid() const;
+  //! rhs_ = delta - h and active_loads_ = N on the active set.
+  void gather_active_system(double approach_m);
+  //! Whether to check Eq. 4 outside the set now, and whether the set has converged.
+  [[nodiscard]] SetCheck check_active_set(const InnerState& state, double residual, double force_mismatch);
+  //! Unloaded strips that interpenetrate after deformation (Eq. 4) into violators_/penetrations_.
+  void find_violators(double approach_m, double depth);
+  //! Admits the violators and their neighbours within `growth` (which then doubles); false if none.
+  bool admit_violators(double approach_m, std::size_t& growth);
+  //! Newton step (bordered with a target load) into next_loads_; false if a load would be non-positive.
+  bool newton_step(const InnerState& state, double force_mismatch, double& next_approach);
+  //! The paper's fixed-point step with the current lengths into next_loads_.
+  void fixed_point_step(const InnerState& state, double& next_approach);
+  //! Accepts next_loads_ and drops non-positive strips (Figure 3); false on a non-finite or empty result.
+  bool take_step(InnerState& state, double next_approach);
   [[nodiscard]] NormalSolution solve_for_load_nested(double normal_force_N, int& iterations);
   void refresh_compliances(double approach_m);
   //! Approach of Hertz at the deepest strip for the given load (the paper's starting value) [m].
@@ -94,6 +124,7 @@ class Mim1dSolver {
   Eigen::MatrixXd jacobian_;        // dR/dN on the active set
   Eigen::VectorXd displacement_;    // u = G N on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
+  Eigen::VectorXd rhs_, active_loads_, ones_, residual_, next_loads_, slope_;  // the active system (scratch)
   std::vector<double> column_h_, column_q_;
 };
 

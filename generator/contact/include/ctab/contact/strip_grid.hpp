@@ -21,8 +21,17 @@ struct StripGrid {
   [[nodiscard]] double half_width_m() const noexcept { return 0.5 * strip_width_m; }
 };
 
-//! Resamples a validated gap onto strips. Throws InputError if the width is not positive and finite or if
-//! fewer than 3 strips fit inside the gap's y-range.
+//! Most strips of one strip problem. MIM-1D holds up to three dense n x n matrices (G, the Jacobian, its LU):
+//! at 4000 strips 3 x 128 MB = 384 MB per solver and seconds per factorisation. The smallest config strip width
+//! (10 um) still fits a tread patch (S1002/UIC60, dy = 2 mm: converged, 8.5 s); 1 um needed ~10 GB before the cap.
+inline constexpr std::size_t kMaxStripsPerPatch = 4000;
+
+//! Number of strips fill_strip_grid makes for a validated gap, computed in double (no allocation, no overflow:
+//! a tiny width gives a huge count, a bad width NaN).
+[[nodiscard]] double strip_count(const GapProfile& gap, double strip_width_m) noexcept;
+
+//! Resamples a validated gap onto strips. Throws InputError if the width is not positive and finite, if
+//! fewer than 3 strips fit inside the gap's y-range, or if more than kMaxStripsPerPatch would be needed.
 [[nodiscard]] StripGrid make_strip_grid(const GapProfile& gap, double strip_width_m);
 //! The same into an existing grid, reusing its storage.
 void fill_strip_grid(const GapProfile& gap, double strip_width_m, StripGrid& grid);

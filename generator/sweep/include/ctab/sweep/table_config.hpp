@@ -1,18 +1,36 @@
 #pragma once
-//! Configuration of a contact-table run (TOML). Every key is checked: unknown keys, wrong types, empty axes and
-//! non-positive steps give an InputError naming the source, the line and the key. The embedded default
+//! Configuration of a contact-table run (TOML). Every key is checked: unknown keys, wrong types, values outside
+//! their range, a missing load, bad axes (make_uniform_axis, axis_range.hpp) and tables too large for memory
+//! give an InputError `file:line: 'key': what was expected`. The embedded default
 //! (kDefaultTableConfig, also examples/configs/default.toml) is S1002 on UIC60 1:40 with the Manchester set-up,
 //! wheelset mode, dy from -12 to +12 mm in 0.1 mm steps, vertical wheel load 78.5 kN, MIM-1D at 0.2 mm strips.
+#include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ctab/wheelrail/contact_geometry_sweep.hpp"
 #include "ctab/contact/material.hpp"
+#include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "ctab/wheelrail/wheelrail_options.hpp"
 
 namespace ctab::gen {
 
 extern const char* const kDefaultTableConfig;
+
+//! Strip width range [m]. Below 10 um a wheel-rail patch window needs more strips than kMaxStripsPerPatch
+//! (strip_grid.hpp) and one case takes seconds; above 5 mm a patch (10-20 mm wide) has too few strips.
+inline constexpr double kMinStripWidth_m = 10e-6;
+inline constexpr double kMaxStripWidth_m = 5e-3;
+//! Largest smoothing length of point profiles [m] (chosen: 100x the default 1 mm catches "1" meant as mm).
+inline constexpr double kMaxSmoothingLength_m = 0.1;
+//! Most patch slots per wheel and case in the table ([output] patch_slots).
+inline constexpr std::size_t kMaxPatchSlots = 16;
+//! Most cases (lateral shifts x loads) per table. Chosen: at about 1 ms per wheel solve this is an hour on 1 core.
+inline constexpr std::size_t kMaxTableCases = 2'000'000;
+//! Largest table in memory [bytes] (table_memory_bytes). Chosen: 8 GiB, a fixed figure (not a fraction of this
+//! machine's memory) so that a config is valid or not everywhere; the default table takes about 1 MB.
+inline constexpr double kMaxTableBytes = 8.0 * 1024.0 * 1024.0 * 1024.0;
 
 struct TableConfig {
   std::string source = "default";          //!< file name, for messages and provenance
@@ -32,7 +50,7 @@ struct TableConfig {
   std::vector<double> load_values;         //!< second axis, or one fixed value [N or m]
   bool second_axis = false;                //!< true when the load or approach is an axis of the table
   std::size_t strip_samples = 32;          //!< points of the resampled strip profiles per patch
-  std::size_t patch_slots = 3;             //!< patch slots per wheel in the table ([output] patch_slots, 1..16)
+  std::size_t patch_slots = 3;             //!< patch slots per wheel and case in the table ([output], 1..16)
   std::size_t key_line(const std::string& key) const;  //!< source line of a key (0 if unknown)
   std::vector<std::pair<std::string, std::size_t>> key_lines;
 };
@@ -41,6 +59,13 @@ struct TableConfig {
 [[nodiscard]] TableConfig parse_table_config(const std::string& text, const std::string& source);
 //! Reads a config file. Throws InputError.
 [[nodiscard]] TableConfig read_table_config(const std::string& path);
+
+//! Memory of the table's datasets [bytes]: cases x 2 wheels x patch_slots x (20 scalars + 2 strip_samples) x 8.
+[[nodiscard]] double table_memory_bytes(const TableConfig& config) noexcept;
+
+//! Places the profiles on the config's track (SideGeometry); an error (e.g. a rail that does not reach the gauge
+//! height) names the config file and the line of track.gauge_height_m (or of profiles.rail). Throws InputError.
+[[nodiscard]] SideGeometry place_profiles(const TableConfig& config, const ProfileTable& wheel, const ProfileTable& rail);
 
 //! Name of the second axis in the table ("vertical_load_N", "normal_load_N" or "approach_m").
 [[nodiscard]] const char* load_axis_name(LoadKind kind) noexcept;

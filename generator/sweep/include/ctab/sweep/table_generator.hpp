@@ -52,6 +52,7 @@ struct SweepSetup {
 struct CaseRoll {
   double roll_rad = 0.0;
   bool converged = true;
+  std::string detail;  //!< why the roll search failed ("" when converged)
 };
 [[nodiscard]] CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m) noexcept;
 

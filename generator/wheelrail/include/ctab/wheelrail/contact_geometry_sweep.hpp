@@ -7,6 +7,7 @@
 //! tan(gamma_e) = (2 pi/lambda)^2 e0 r0, independent of e0 r0. The quarter wavelength is the integral
 //! int_0^y_hat du / sqrt(2 (V(y_hat) - V(u))), V(u) = int_0^u dr/2 (e0 r0 = 1), computed with u = y_hat sin(theta)
 //! by Gauss-Legendre. Linear dr = 2 gamma y gives gamma exactly. Assumes mirror-image sides (dr odd).
+#include <string>
 #include <vector>
 
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
@@ -20,6 +21,8 @@ struct RigidContactRow {
   double roll_rad = 0.0;
   GapMinimum right, left;            //!< first contact of each wheel (left in its own mirrored frame)
   double rolling_radius_difference_m = 0.0;  //!< r_right - r_left [m]
+  bool converged = true;             //!< false when the roll iteration failed or a wheel is off its rail
+  std::string detail;                //!< empty when converged; otherwise why not, in words
 };
 
 //! Rigid contact at one shift; in single-wheel mode roll = 0 and each wheel is lowered on its own.

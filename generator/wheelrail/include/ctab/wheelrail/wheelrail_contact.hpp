@@ -19,7 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "ctab/contact/mim1d.hpp"
+#include "ctab/contact/normal_solution.hpp"
+#include "ctab/contact/solve_status.hpp"
 #include "ctab/wheelrail/wheelrail_options.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 
@@ -61,6 +62,9 @@ struct WheelContact {
   double solve_time_s = 0.0;
   std::vector<ContactPatch> patches;
   std::vector<GapMinimum> near_misses;  //!< minima not in contact, with their vertical gap
+  //! Empty on success; otherwise what went wrong, in words (e.g. "negative approach", "patch needs 5000 strips
+  //! (max 4000): strip width too small", "MIM-1D did not converge in 300 iterations at patch 1").
+  std::string detail;
 };
 
 //! Reusable storage of solve_wheel_contact: the patches' strip problems and their MIM-1D solvers. One per thread

@@ -10,6 +10,7 @@
 //! profile (from the track centre) that is `gauge_height` below the top; z = 0 is the plane on the rail tops.
 //! Vertical gap at S: g(S) = z_rail(y_rail(S)) - z_wheel(S); the wheel touches when min g = 0.
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "ctab/profiles/profile.hpp"
@@ -89,6 +90,7 @@ struct WheelsetPose {
   double z_right_m = 0.0;   //!< z_ws at first contact of the right wheel [m]
   double z_left_m = 0.0;    //!< the same for the left wheel [m]
   bool converged = true;
+  std::string detail;       //!< empty when converged; otherwise why not, in words (names dy)
 };
 
 //! Roll angle at which both wheels touch at the same z_ws (rigid wheelset), by a safeguarded root finder.
