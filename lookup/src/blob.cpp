@@ -1,8 +1,6 @@
 // Blob writer and reader: explicit little-endian encoding (independent of the host's byte order), sizes checked
 // against the header before anything is allocated, FNV-1a 64 of the payload.
-#include <algorithm>
 #include <cstring>
-#include <iterator>
 #include <limits>
 #include <string>
 
@@ -101,8 +99,8 @@ bool looks_like_hdf5(const void* bytes, std::size_t size) noexcept {
 
 std::vector<unsigned char> write_blob(const TableData& data, bool single) {
   const std::size_t value_bytes = single ? 4 : 8;
-  std::vector<unsigned char> payload;
-  Writer w(payload);
+  std::vector<unsigned char> blob(kBlobHeaderBytes, 0);  // header filled in at the end
+  Writer w(blob);
   for (const std::size_t count : {data.n_dy(), data.n_second(), data.n_slots, data.strip_samples, data.jumps.size(),
                                   static_cast<std::size_t>(data.second_axis), kQuantities, std::size_t{0}})
     w.u(count, 4);
@@ -123,19 +121,17 @@ std::vector<unsigned char> write_blob(const TableData& data, bool single) {
     w.u(static_cast<std::uint8_t>(j.kind), 1);
     w.u(0, 1);
   }
-  while (payload.size() % 8 != 0) payload.push_back(0);
+  while (blob.size() % 8 != 0) blob.push_back(0);
+  const std::size_t payload_size = blob.size() - kBlobHeaderBytes;
 
-  unsigned char header[kBlobHeaderBytes] = {};
+  unsigned char* header = blob.data();
   std::memcpy(header, kBlobMagic, sizeof kBlobMagic);
   store_le(header + 8, kBlobVersion, 4);
   store_le(header + 12, static_cast<std::uint64_t>(kSchemaVersion), 4);
   store_le(header + 16, value_bytes, 4);
   store_le(header + 20, kBlobHeaderBytes, 4);
-  store_le(header + 24, payload.size(), 8);
-  store_le(header + 32, fnv1a64(payload.data(), payload.size()), 8);
-  std::vector<unsigned char> blob(kBlobHeaderBytes + payload.size());
-  std::copy(std::begin(header), std::end(header), blob.begin());
-  std::copy(payload.begin(), payload.end(), blob.begin() + static_cast<std::ptrdiff_t>(kBlobHeaderBytes));
+  store_le(header + 24, payload_size, 8);
+  store_le(header + 32, fnv1a64(header + kBlobHeaderBytes, payload_size), 8);
   return blob;
 }
 
