@@ -3,6 +3,7 @@
 //! HDF5 or a file system (ctab_table_open_memory). Layout: lookup/README.md "Blob format".
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "ctab/lookup/table_data.hpp"
@@ -25,5 +26,13 @@ inline constexpr std::size_t kBlobHeaderBytes = 64;
 
 //! True if the bytes start like an HDF5 file (signature at offset 0).
 [[nodiscard]] bool looks_like_hdf5(const void* bytes, std::size_t size) noexcept;
+
+}  // namespace ctab::lookup
+
+namespace ctab::lookup {
+
+//! A C header holding `blob` as `static const unsigned char NAME[]` (8-byte aligned) and `NAME_size`, for
+//! ctab_table_open_memory(NAME, NAME_size, ...) on targets without a file system. `name` must be a C identifier.
+[[nodiscard]] std::string blob_c_header(const std::vector<unsigned char>& blob, const std::string& name);
 
 }  // namespace ctab::lookup
