@@ -130,7 +130,9 @@ Command add_bench_command(CLI::App& parent) {
   auto repetitions = std::make_shared<int>(5);
   CLI::App* generate = app->add_subcommand("generate", "The default table at 1 and 2 threads: time, parallel efficiency, file size");
   generate->add_option("--repetitions", *repetitions, "runs per thread count (default 5)");
-  return {app, [seconds, solver, wheelrail, repetitions] {
+  const Command lookup = add_bench_lookup_subcommand(*app);
+  return {app, [seconds, solver, wheelrail, repetitions, lookup] {
+            if (lookup.app->parsed()) return lookup.run();
             if (solver->parsed()) return run_bench_solver(*seconds);
             if (wheelrail->parsed()) return run_bench_wheelrail(*seconds);
             return run_bench_generate(*repetitions);

@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
                                                     ctab::cli::add_solve_command(app),
                                                     ctab::cli::add_paper_cases_command(app),
                                                     ctab::cli::add_geometry_command(app),
-                                                    ctab::cli::add_bench_command(app)};
+                                                    ctab::cli::add_bench_command(app),
+                                                    ctab::cli::add_export_command(app),
+                                                    ctab::cli::add_query_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
