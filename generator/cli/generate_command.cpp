@@ -58,6 +58,8 @@ int run_generate(const GenerateOptions& o) {
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;
   info.git_commit = CTAB_GIT_COMMIT;
+  info.compiler = "unknown";     // the integrator wires CTAB_COMPILER here
+  info.build_flags = "unknown";  // and CTAB_BUILD_FLAGS
   if (o.threads < 0) throw gen::InputError("--threads", 0, "expected a positive number of threads");
   info.threads = o.threads > 0 ? o.threads : omp_get_max_threads();
   const auto start = std::chrono::steady_clock::now();
@@ -67,14 +69,14 @@ int run_generate(const GenerateOptions& o) {
   const tables::TableResult written = tables::write_table(table, o.output);
   if (!written.ok()) throw gen::Error(written.message);
   std::map<int, std::size_t> counts;
-  for (const auto s : table.status) ++counts[s];
+  for (const auto s : table.status) ++counts[static_cast<int>(s)];
   if (!o.quiet) {
     std::printf("ctab generate: %zu lateral shifts x %zu %s x 2 wheels in %.2f s on %d thread(s)%s\n", table.n_dy(),
                 table.n_second(), table.second_axis_name.c_str(), seconds, info.threads,
                 table.text_attributes.at("mirrored").rfind("true", 0) == 0 ? " (left wheel mirrored)" : "");
     std::printf("wrote %s (%.1f kB); statuses:", o.output.c_str(), static_cast<double>(std::filesystem::file_size(o.output)) / 1024.0);
-    for (const auto& [status, count] : counts) std::printf(" %s %zu", gen::status_name(static_cast<gen::SolveStatus>(status)), count);
-    std::printf("\n");
+    for (const auto& [status, count] : counts) std::printf(" %s %zu", tables::case_status_name(static_cast<tables::CaseStatus>(status)), count);
+    std::printf("; %zu contact jumps\n", table.jumps.size());
   }
   for (const auto& [status, count] : counts)
     if (status < 0) return 4;  // the table is written, but some cases failed (their status says which)

@@ -1,60 +1,93 @@
-// `ctab inspect FILE`: validate a table and print its schema, provenance, axes, statuses and contact jumps.
-#include <cmath>
+// `ctab inspect FILE [--json]`: validate a table and print its schema, provenance, axes, statuses, patches per
+// slot and the contact jumps stored in the file.
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "ctab/contact/error.hpp"
-#include "ctab/contact/solve_status.hpp"
 #include "ctab/tables/table.hpp"
 
 namespace ctab::cli {
 
 namespace {
 
-int run_inspect(const std::string& path) {
+const char* jump_kind_name(tables::JumpKind kind) {
+  switch (kind) {
+    case tables::JumpKind::Appears: return "appears";
+    case tables::JumpKind::Disappears: return "disappears";
+    case tables::JumpKind::Moves: return "moves";
+  }
+  return "unknown";
+}
+
+// Everything inspect reports, as JSON (the text output prints the same object).
+nlohmann::ordered_json summary(const tables::Table& t) {
+  nlohmann::ordered_json out;
+  out["schema_version"] = tables::kSchemaVersion;
+  for (const auto& [name, value] : t.text_attributes) out["provenance"][name] = value;
+  for (const auto& [name, value] : t.number_attributes) out["provenance"][name] = value;
+  for (const auto& [name, value] : t.integer_attributes) out["provenance"][name] = value;
+  const auto& dy = t.lateral_displacement_m;
+  out["axes"]["lateral_displacement_m"] = {{"units", "m"}, {"count", dy.size()}, {"first", dy.front()},
+                                           {"last", dy.back()}, {"step", dy.size() > 1 ? dy[1] - dy[0] : 0.0}};
+  out["axes"]["second"] = {{"name", t.second_axis_name}, {"units", t.second_axis_units}, {"values", t.second_axis}};
+  out["n_slots"] = t.n_slots;
+  out["strip_samples"] = t.strip_samples;
+  std::map<int, std::size_t> counts;
+  for (const auto s : t.status) ++counts[static_cast<int>(s)];
+  for (const auto& [status, count] : counts) out["status_counts"][tables::case_status_name(static_cast<tables::CaseStatus>(status))] = count;
+  std::vector<std::size_t> per_slot(t.n_slots, 0);
+  for (std::size_t k = 0; k < t.patch.present.size(); ++k) per_slot[k % t.n_slots] += t.patch.present[k];
+  out["patches_per_slot"] = per_slot;
+  out["jumps"] = nlohmann::ordered_json::array();
+  for (const tables::Jump& j : t.jumps)
+    out["jumps"].push_back({{"kind", jump_kind_name(j.kind)}, {"wheel", j.wheel == 0 ? "right" : "left"}, {"slot", j.slot},
+                            {"i_second", j.i_second}, {"second", t.second_axis[j.i_second]}, {"i_dy", j.i_dy},
+                            {"dy_low_m", dy[j.i_dy]}, {"dy_high_m", dy[j.i_dy + 1]}});
+  return out;
+}
+
+void print_text(const std::string& path, const nlohmann::ordered_json& s) {
+  std::printf("%s: ctab contact table, schema version %d (valid)\n", path.c_str(), tables::kSchemaVersion);
+  for (const auto& [name, value] : s["provenance"].items()) {
+    if (name == "config") continue;
+    if (value.is_string())
+      std::printf("  %-22s %s\n", name.c_str(), value.get<std::string>().c_str());
+    else
+      std::printf("  %-22s %.10g\n", name.c_str(), value.get<double>());
+  }
+  const auto& dy = s["axes"]["lateral_displacement_m"];
+  std::printf("axes: lateral_displacement_m %zu values, %g .. %g m, step %g m\n", dy["count"].get<std::size_t>(),
+              dy["first"].get<double>(), dy["last"].get<double>(), dy["step"].get<double>());
+  const auto& second = s["axes"]["second"];
+  std::printf("      %s %zu value(s) in %s: %s\n", second["name"].get<std::string>().c_str(), second["values"].size(),
+              second["units"].get<std::string>().c_str(), second["values"].dump().c_str());
+  std::printf("patch slots: %zu; strip profiles: %zu samples per patch\n", s["n_slots"].get<std::size_t>(),
+              s["strip_samples"].get<std::size_t>());
+  std::printf("status counts (case x wheel):");
+  for (const auto& [name, count] : s["status_counts"].items()) std::printf(" %s %zu", name.c_str(), count.get<std::size_t>());
+  std::printf("\npatches present per slot:");
+  for (std::size_t slot = 0; slot < s["patches_per_slot"].size(); ++slot)
+    std::printf(" %zu: %zu", slot, s["patches_per_slot"][slot].get<std::size_t>());
+  std::printf("\ncontact jumps: %zu\n", s["jumps"].size());
+  for (const auto& j : s["jumps"])
+    std::printf("  %-10s %s wheel, slot %d, %s = %g: dy %.2f -> %.2f mm\n", j["kind"].get<std::string>().c_str(),
+                j["wheel"].get<std::string>().c_str(), j["slot"].get<int>(), second["name"].get<std::string>().c_str(),
+                j["second"].get<double>(), j["dy_low_m"].get<double>() * 1e3, j["dy_high_m"].get<double>() * 1e3);
+}
+
+int run_inspect(const std::string& path, bool json) {
   tables::Table t;
   const tables::TableResult result = tables::read_table(path, t);
   if (!result.ok()) throw gen::Error(result.message);
-  std::printf("%s: ctab contact table, schema version %d (valid)\n", path.c_str(), tables::kSchemaVersion);
-  for (const auto& [name, value] : t.text_attributes)
-    if (name != "config") std::printf("  %-22s %s\n", name.c_str(), value.c_str());
-  for (const auto& [name, value] : t.number_attributes) std::printf("  %-22s %g\n", name.c_str(), value);
-  const auto& dy = t.lateral_displacement_m;
-  std::printf("axes: lateral_displacement_m %zu values, %g .. %g m, step %g m\n", dy.size(), dy.front(), dy.back(),
-              dy.size() > 1 ? dy[1] - dy[0] : 0.0);
-  std::printf("      %s %zu value(s), %g .. %g\n", t.second_axis_name.c_str(), t.n_second(), t.second_axis.front(), t.second_axis.back());
-  std::printf("strip profiles: %zu samples per patch\n", t.strip_samples);
-  std::map<int, std::size_t> counts;
-  for (const auto s : t.status) ++counts[s];
-  std::printf("status counts (case x wheel):");
-  for (const auto& [status, count] : counts) std::printf(" %s %zu", gen::status_name(static_cast<gen::SolveStatus>(status)), count);
-  std::printf("\n");
-  std::size_t slots[tables::kSlots] = {};
-  for (std::size_t k = 0; k < t.patch.present.size(); ++k) slots[k % tables::kSlots] += t.patch.present[k];
-  std::printf("patches present: tread %zu, flange %zu, spare %zu\n", slots[0], slots[1], slots[2]);
-  // Contact jumps: the wheel contact point of the strongest patch moves by more than 1 mm or 10 steps.
-  const double threshold = std::max(1e-3, 10.0 * (dy.size() > 1 ? dy[1] - dy[0] : 0.0));
-  for (std::size_t i_second = 0; i_second < t.n_second(); ++i_second)
-    for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel) {
-      double previous = NAN;
-      for (std::size_t i = 0; i < t.n_dy(); ++i) {
-        double best = -1, position = NAN;
-        for (std::size_t slot = 0; slot < tables::kSlots; ++slot) {
-          const std::size_t k = t.patch_index(i, i_second, wheel, slot);
-          if (t.patch.present[k] && t.patch.normal_force_N[k] > best) {
-            best = t.patch.normal_force_N[k];
-            position = t.patch.y_wheel_m[k];
-          }
-        }
-        if (std::isfinite(previous) && std::isfinite(position) && std::abs(position - previous) > threshold)
-          std::printf("contact jump, %s wheel, %s = %g: between dy = %.2f and %.2f mm, wheel y %.2f -> %.2f mm\n",
-                      wheel == 0 ? "right" : "left", t.second_axis_name.c_str(), t.second_axis[i_second], dy[i - 1] * 1e3,
-                      dy[i] * 1e3, previous * 1e3, position * 1e3);
-        previous = position;
-      }
-    }
+  const nlohmann::ordered_json s = summary(t);
+  if (json)
+    std::cout << s.dump(1) << '\n';
+  else
+    print_text(path, s);
   return 0;
 }
 
@@ -62,9 +95,11 @@ int run_inspect(const std::string& path) {
 
 Command add_inspect_command(CLI::App& parent) {
   auto path = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
   CLI::App* app = parent.add_subcommand("inspect", "Validate a contact table and print its schema, provenance, axes, statuses and jumps");
   app->add_option("file", *path, "table (.h5)")->required();
-  return {app, [path] { return run_inspect(*path); }};
+  app->add_flag("--json", *json, "print one JSON object (schema, provenance, axes, status counts, patches per slot, jumps)");
+  return {app, [path, json] { return run_inspect(*path, *json); }};
 }
 
 }  // namespace ctab::cli

@@ -175,7 +175,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
                 {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
                 {"solver", {"mode", "method", "strip_width_m"}},
                 {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
-                {"output", {"strip_samples"}}});
+                {"output", {"strip_samples", "patch_slots"}}});
   TableConfig c;
   c.source = source;
   c.text = text;
@@ -241,6 +241,10 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
   if (!(samples >= 2 && samples <= 1024 && samples == std::floor(samples)))
     throw InputError(source, c.key_line("output.strip_samples"), "'output.strip_samples': expected an integer in [2, 1024]");
   c.strip_samples = static_cast<std::size_t>(samples);
+  const double slots = r.number("output", "patch_slots", 3.0);
+  if (!(slots >= 1 && slots <= 16 && slots == std::floor(slots)))
+    throw InputError(source, c.key_line("output.patch_slots"), "'output.patch_slots': expected an integer in [1, 16]");
+  c.patch_slots = static_cast<std::size_t>(slots);
   return c;
 }
 

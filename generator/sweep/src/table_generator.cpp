@@ -1,24 +1,45 @@
 #include "ctab/sweep/table_generator.hpp"
-#include "ctab/wheelrail/wheelrail_contact.hpp"
 
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <ctime>
-#include <numbers>
 #include <condition_variable>
+#include <ctime>
 #include <mutex>
+#include <numbers>
 #include <thread>
 
 #include "ctab/contact/error.hpp"
 #include "ctab/contact/hertz.hpp"
+#include "ctab/contact/strip_kernel.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/io/sha256.hpp"
-#include "ctab/contact/strip_kernel.hpp"
 
 namespace ctab::gen {
+
+// ---- status mapping: every value the two enums share is the same number ----
+using tables::CaseStatus;
+static_assert(static_cast<int>(SolveStatus::Converged) == static_cast<int>(CaseStatus::Converged));
+static_assert(static_cast<int>(SolveStatus::NoContact) == static_cast<int>(CaseStatus::NoContact));
+static_assert(static_cast<int>(SolveStatus::MaxIterations) == static_cast<int>(CaseStatus::MaxIterations));
+static_assert(static_cast<int>(SolveStatus::InvalidInput) == static_cast<int>(CaseStatus::InvalidInput));
+static_assert(static_cast<int>(SolveStatus::ZoneTruncated) == static_cast<int>(CaseStatus::ZoneTruncated));
+static_assert(static_cast<int>(SolveStatus::NumericalFailure) == static_cast<int>(CaseStatus::NumericalFailure));
+
+tables::CaseStatus case_status(SolveStatus status) noexcept {
+  switch (status) {
+    case SolveStatus::Converged: return CaseStatus::Converged;
+    case SolveStatus::NoContact: return CaseStatus::NoContact;
+    case SolveStatus::MaxIterations: return CaseStatus::MaxIterations;
+    case SolveStatus::InvalidInput: return CaseStatus::InvalidInput;
+    case SolveStatus::ZoneTruncated: return CaseStatus::ZoneTruncated;
+    case SolveStatus::NumericalFailure: return CaseStatus::NumericalFailure;
+  }
+  return CaseStatus::NumericalFailure;
+}
 
 void equivalent_ellipse(double area_m2, double length_m, double width_m, double& a_m, double& b_m) noexcept {
   if (!(area_m2 > 0.0 && length_m > 0.0 && width_m > 0.0)) {
@@ -43,20 +64,78 @@ ProfileTable load_checked(const TableConfig& config, const std::string& spec, Pr
   }
 }
 
-std::string utc_now() {
-  std::time_t now = std::time(nullptr);
-  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = static_cast<std::time_t>(std::atoll(epoch));
-  char text[32];
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
+}  // namespace
+
+// ---- set-up ----
+
+SweepSetup make_sweep_setup(const TableConfig& config) {
+  SweepSetup setup;
+  setup.wheel = std::make_unique<const ProfileTable>(load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel"));
+  setup.rail = std::make_unique<const ProfileTable>(load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail"));
+  setup.side = std::make_unique<const SideGeometry>(*setup.wheel, *setup.rail, config.track);
+  setup.E_star_Pa = effective_modulus(config.material, config.material);
+  setup.options.method = config.method;
+  setup.options.mim1d.strip_width_m = config.strip_width_m;
+  if (!(setup.options.mim1d.strip_width_m > 0.0))
+    throw InputError(config.source, config.key_line("solver.strip_width_m"), "strip width must be positive");
+  setup.mode = config.mode;
+  setup.load_kind = config.load_kind;
+  (void)StripKernel::instance();  // process-wide tables are built here, not inside a parallel region
+  HertzCoefficients warm_up;
+  (void)hertz_coefficients_tabulated(1.0, 2.0, warm_up);
+  return setup;
 }
+
+// ---- one case ----
+
+CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m) noexcept {
+  if (setup.mode != ContactMode::Wheelset) return {};
+  try {
+    const WheelsetPose pose = rigid_wheelset_pose(*setup.side, *setup.side, dy_m);
+    return {pose.roll_rad, pose.converged};
+  } catch (...) {
+    return {0.0, false};
+  }
+}
+
+CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
+                           double load_value, WheelContactWorkspace& workspace) noexcept {
+  const double shift = wheel == 1 ? -dy_m : dy_m, angle = wheel == 1 ? -roll.roll_rad : roll.roll_rad;
+  CaseWheel out;
+  try {
+    out.contact = solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                      setup.options, workspace);
+    if (!roll.converged) {
+      out.contact.status = SolveStatus::MaxIterations;
+      out.contact.patches.clear();
+    }
+  } catch (...) {
+    out = CaseWheel{};
+    out.exception = true;
+  }
+  return out;
+}
+
+CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value) {
+  CaseSolution solution;
+  solution.dy_m = dy_m;
+  solution.load_value = load_value;
+  solution.roll = solve_case_roll(setup, dy_m);
+  WheelContactWorkspace workspace;
+  for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel)
+    solution.wheels[wheel] = solve_case_wheel(setup, wheel, dy_m, solution.roll, load_value, workspace);
+  solution.rolling_radius_difference_m = solution.wheels[0].contact.rigid_contact.rolling_radius_m -
+                                         solution.wheels[1].contact.rigid_contact.rolling_radius_m;
+  return solution;
+}
+
+// ---- assembly of one wheel of one case ----
+
+namespace {
 
 // Linear interpolation of a strip profile at s (0 outside the strips).
 double sample_strips(const std::vector<PatchStrip>& strips, double s, bool pressure) {
-  if (strips.empty() || s < strips.front().s_m || s > strips.back().s_m)
-    return 0.0;
+  if (strips.empty() || s < strips.front().s_m || s > strips.back().s_m) return 0.0;
   const auto upper = std::lower_bound(strips.begin(), strips.end(), s, [](const PatchStrip& a, double v) { return a.s_m < v; });
   if (upper == strips.begin()) return pressure ? upper->p0_Pa : upper->half_length_m;
   const PatchStrip& hi = *upper;
@@ -65,104 +144,129 @@ double sample_strips(const std::vector<PatchStrip>& strips, double s, bool press
   return pressure ? (1 - t) * lo.p0_Pa + t * hi.p0_Pa : (1 - t) * lo.half_length_m + t * hi.half_length_m;
 }
 
-void store_wheel(tables::Table& table, std::size_t i_dy, std::size_t i_second, std::size_t wheel, const WheelContact& c) {
-  table.status[(i_dy * table.n_second() + i_second) * tables::kWheels + wheel] = static_cast<std::int8_t>(c.status);
-  std::array<bool, tables::kSlots> used{};
-  auto& p = table.patch;
-  for (const ContactPatch& patch : c.patches) {
-    std::size_t slot = patch.zone == "flange" ? 1 : 0;
-    if (used[slot]) slot = 2;  // a second patch in the same zone goes to the spare slot
-    if (used[slot]) continue;  // more than three patches: the weakest are dropped (never seen on standard profiles)
-    used[slot] = true;
-    const std::size_t k = table.patch_index(i_dy, i_second, wheel, slot);
-    p.present[k] = 1;
-    p.normal_force_N[k] = patch.normal_force_N;
-    p.area_m2[k] = patch.area_m2;
-    p.max_pressure_Pa[k] = patch.max_pressure_Pa;
-    p.approach_m[k] = patch.approach_m;
-    p.contact_angle_rad[k] = patch.contact_angle_rad;
-    p.y_wheel_m[k] = patch.y_wheel_m;
-    p.y_rail_m[k] = patch.y_rail_m;
-    p.y_cop_rail_m[k] = patch.y_cop_rail_m;
-    p.rolling_radius_m[k] = patch.rolling_radius_m;
-    p.s_min_m[k] = patch.s_min_m;
-    p.s_max_m[k] = patch.s_max_m;
-    double longest = 0.0;
-    for (const PatchStrip& s : patch.strips) longest = std::max(longest, 2.0 * s.half_length_m);
-    equivalent_ellipse(patch.area_m2, longest, patch.s_max_m - patch.s_min_m, p.semi_axis_a_m[k], p.semi_axis_b_m[k]);
-    const std::size_t n = table.strip_samples;
-    for (std::size_t j = 0; j < n; ++j) {
-      const double s = patch.s_min_m + (patch.s_max_m - patch.s_min_m) * static_cast<double>(j) / static_cast<double>(n - 1);
-      p.strip_half_length_m[k * n + j] = sample_strips(patch.strips, s, false);
-      p.strip_peak_pressure_Pa[k * n + j] = sample_strips(patch.strips, s, true);
+// Lateral rail coordinate of s = 0: the point where the contact plane touches the rail (its slope there is
+// tan(plane_angle); wheelrail_contact.cpp builds the plane at the reference minimum). A patch that holds s = 0
+// has it as its contact point; otherwise (a run split off the reference window) the tangent point is found by
+// secant steps on the rail slope from the strips' linear extrapolation to s = 0.
+double s_origin_y_rail(const ContactPatch& patch, const ProfileTable& rail) {
+  if (patch.s_min_m <= 0.0 && patch.s_max_m >= 0.0) return patch.y_rail_m;
+  const auto& strips = patch.strips;
+  double y = patch.y_rail_m;
+  if (strips.size() >= 2 && strips.back().s_m > strips.front().s_m)
+    y = strips.front().y_rail_m - strips.front().s_m * (strips.back().y_rail_m - strips.front().y_rail_m) /
+                                      (strips.back().s_m - strips.front().s_m);
+  const double target = std::tan(patch.plane_angle_rad);
+  auto f = [&](double at) { return rail.at(at).dz - target; };
+  double y0 = y, y1 = y + 1e-4, f0 = f(y0), f1 = f(y1);
+  for (int i = 0; i < 40 && std::abs(f1) > 1e-13 && f1 != f0; ++i) {
+    const double next = y1 - f1 * (y1 - y0) / (f1 - f0);
+    y0 = y1;
+    f0 = f1;
+    y1 = std::clamp(next, rail.y_min(), rail.y_max());
+    f1 = f(y1);
+  }
+  return std::abs(f1) <= 1e-9 ? y1 : y;
+}
+
+// Slots: the first tread patch in slot 0, the first flange patch in slot 1, the others in the next free slots
+// (from 2) in order of their rail position. Returns false when there are more patches than slots.
+bool assign_slots(const std::vector<ContactPatch>& patches, std::size_t n_slots, std::vector<std::size_t>& slot_of) {
+  slot_of.assign(patches.size(), n_slots);
+  std::vector<bool> used(std::max<std::size_t>(n_slots, 2), false);
+  std::vector<std::size_t> extra;
+  for (std::size_t i = 0; i < patches.size(); ++i) {
+    const std::size_t zone_slot = patches[i].zone == "flange" ? 1 : 0;
+    if (!used[zone_slot] && zone_slot < n_slots) {
+      used[zone_slot] = true;
+      slot_of[i] = zone_slot;
+    } else {
+      extra.push_back(i);
     }
+  }
+  std::stable_sort(extra.begin(), extra.end(), [&](std::size_t a, std::size_t b) { return patches[a].y_rail_m < patches[b].y_rail_m; });
+  std::size_t next = 2;
+  for (const std::size_t i : extra) {
+    if (next >= n_slots) return false;
+    slot_of[i] = next++;
+  }
+  return true;
+}
+
+void store_patch(tables::Table& table, const ProfileTable& rail, std::size_t k, const ContactPatch& patch) {
+  auto& p = table.patch;
+  p.present[k] = 1;
+  p.normal_force_N[k] = patch.normal_force_N;
+  // Force of the wheel on the rail along the contact-plane normal (into the rail): vertical N cos(delta), + down;
+  // lateral -N sin(delta), + to the field side (delta < 0 on the gauge side, so a flange force is > 0).
+  p.force_vertical_N[k] = patch.normal_force_N * std::cos(patch.plane_angle_rad);
+  p.force_lateral_N[k] = -patch.normal_force_N * std::sin(patch.plane_angle_rad);
+  p.area_m2[k] = patch.area_m2;
+  p.max_pressure_Pa[k] = patch.max_pressure_Pa;
+  p.approach_m[k] = patch.approach_m;
+  p.contact_angle_rad[k] = patch.contact_angle_rad;
+  p.plane_angle_rad[k] = patch.plane_angle_rad;
+  p.s_origin_y_rail_m[k] = s_origin_y_rail(patch, rail);
+  p.s_origin_z_rail_m[k] = rail.at(p.s_origin_y_rail_m[k]).z;
+  p.y_wheel_m[k] = patch.y_wheel_m;
+  p.y_rail_m[k] = patch.y_rail_m;
+  p.y_cop_rail_m[k] = patch.y_cop_rail_m;
+  p.rolling_radius_m[k] = patch.rolling_radius_m;
+  p.s_min_m[k] = patch.s_min_m;
+  p.s_max_m[k] = patch.s_max_m;
+  double longest = 0.0;
+  for (const PatchStrip& s : patch.strips) longest = std::max(longest, 2.0 * s.half_length_m);
+  equivalent_ellipse(patch.area_m2, longest, patch.s_max_m - patch.s_min_m, p.semi_axis_a_m[k], p.semi_axis_b_m[k]);
+  const std::size_t n = table.strip_samples;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double s = patch.s_min_m + (patch.s_max_m - patch.s_min_m) * static_cast<double>(j) / static_cast<double>(n - 1);
+    p.strip_half_length_m[k * n + j] = sample_strips(patch.strips, s, false);
+    p.strip_peak_pressure_Pa[k * n + j] = sample_strips(patch.strips, s, true);
   }
 }
 
 }  // namespace
 
-tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info, const ProgressCallback& progress) {
-  // ---- set-up (serial; may throw) ----
-  const ProfileTable wheel = load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel");
-  const ProfileTable rail = load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail");
-  const SideGeometry side(wheel, rail, config.track);
-  const double E_star = effective_modulus(config.material, config.material);
-  WheelRailOptions options;
-  options.method = config.method;
-  options.mim1d.strip_width_m = config.strip_width_m;
-  if (options.mim1d.strip_width_m <= 0.0) throw InputError(config.source, config.key_line("solver.strip_width_m"), "strip width must be positive");
-  (void)StripKernel::instance();  // process-wide tables are built here, not inside the parallel region
-  HertzCoefficients warm_up;
-  (void)hertz_coefficients_tabulated(1.0, 2.0, warm_up);
+void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
+                      std::size_t wheel, const CaseWheel& solved) {
+  CaseStatus& status = table.status[table.wheel_index(i_dy, i_second, wheel)];
+  status = solved.exception ? CaseStatus::SolverException : case_status(solved.contact.status);
+  if (!tables::is_success(status)) return;  // a failed case holds no patches
+  std::vector<std::size_t> slot_of;
+  if (!assign_slots(solved.contact.patches, table.n_slots, slot_of)) {
+    status = CaseStatus::SlotOverflow;
+    return;
+  }
+  for (std::size_t i = 0; i < slot_of.size(); ++i)
+    store_patch(table, *setup.rail, table.patch_index(i_dy, i_second, wheel, slot_of[i]), solved.contact.patches[i]);
+}
 
-  const auto& dy = config.lateral_displacement_m;
-  const std::size_t n_dy = dy.size(), n_second = config.load_values.size();
-  const double span = std::max(std::abs(dy.front()), std::abs(dy.back()));
-  const bool mirrored = std::abs(dy.front() + dy.back()) <= 1e-9 * span + 1e-15;  // same profiles both sides, symmetric axis
-  const int threads = std::max(1, info.threads);
+// ---- the whole table, in named steps ----
 
-  // ---- roll angles (parallel; one per lateral shift) ----
-  std::vector<double> roll(n_dy, 0.0);
-  std::vector<std::int8_t> roll_ok(n_dy, 1);
-  // ---- contact solves (parallel): right wheel at every case, left wheel only when not mirrored ----
-  const std::size_t sides = mirrored ? 1 : 2;
-  const std::size_t total = n_dy * n_second * sides;
-  std::vector<WheelContact> results(total);
-  std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(threads));  // one per thread
-  std::atomic<std::size_t> done{0};
-  auto work = [&] {
-    if (config.mode == ContactMode::Wheelset) {
-      // schedule(dynamic): the roll iteration costs more where the contact jumps.
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-      for (std::size_t i = 0; i < n_dy; ++i) {
-        try {
-          const WheelsetPose pose = rigid_wheelset_pose(side, side, dy[i]);
-          roll[i] = pose.roll_rad;
-          roll_ok[i] = pose.converged ? 1 : 0;
-        } catch (...) {
-          roll_ok[i] = 0;
-        }
-      }
-    }
-    // schedule(dynamic): flange cases cost several times tread cases.
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-    for (std::size_t task = 0; task < total; ++task) {
-      const std::size_t left = task / (n_dy * n_second), rest = task % (n_dy * n_second);
-      const std::size_t i_dy = rest / n_second, i_second = rest % n_second;
-      const double shift = left ? -dy[i_dy] : dy[i_dy], angle = left ? -roll[i_dy] : roll[i_dy];
-      try {
-        WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
-        results[task] = solve_wheel_contact(side, shift, angle, E_star, config.load_kind, config.load_values[i_second], options, workspace);
-        if (!roll_ok[i_dy]) results[task].status = SolveStatus::MaxIterations;
-      } catch (...) {
-        results[task] = WheelContact{};
-        results[task].status = SolveStatus::NumericalFailure;
-      }
-      done.fetch_add(1, std::memory_order_relaxed);
-    }
-  };
-  // The sweep runs on a worker thread so that this thread can report progress without any I/O in the region;
-  // it wakes every 0.1 s, and at once when the sweep ends.
+namespace {
+
+struct SweepPlan {
+  std::vector<double> dy_m;
+  std::vector<double> load_values;
+  bool mirrored = false;  // one wheel and one rail profile for both sides and a symmetric dy axis
+  std::size_t sides = 2;  // wheels solved: 1 when mirrored
+  int threads = 1;
+  [[nodiscard]] std::size_t cases() const { return dy_m.size() * load_values.size(); }
+};
+
+SweepPlan make_plan(const TableConfig& config, const GeneratorInfo& info) {
+  SweepPlan plan;
+  plan.dy_m = config.lateral_displacement_m;
+  plan.load_values = config.load_values;
+  const double span = std::max(std::abs(plan.dy_m.front()), std::abs(plan.dy_m.back()));
+  plan.mirrored = std::abs(plan.dy_m.front() + plan.dy_m.back()) <= 1e-9 * span + 1e-15;
+  plan.sides = plan.mirrored ? 1 : 2;
+  plan.threads = std::max(1, info.threads);
+  return plan;
+}
+
+// Runs `work` on a worker thread while this thread reports progress every 0.1 s (no I/O in the parallel region).
+void run_with_progress(const std::function<void()>& work, const std::atomic<std::size_t>& done, std::size_t total,
+                       const ProgressCallback& progress) {
   std::mutex mutex;
   std::condition_variable finished_signal;
   bool finished = false;
@@ -185,49 +289,111 @@ tables::Table generate_table(const TableConfig& config, const GeneratorInfo& inf
   }
   worker.join();
   if (progress) progress(total, total);
+}
 
-  // ---- assemble the table (serial) ----
+// Rolls (one per lateral shift) then every solved wheel of every case, each task writing only its own slot.
+// Results are indexed (side, i_dy, i_second).
+std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, std::vector<CaseRoll>& rolls,
+                             const ProgressCallback& progress) {
+  const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size(), total = plan.cases() * plan.sides;
+  rolls.assign(n_dy, CaseRoll{});
+  std::vector<CaseWheel> results(total);
+  std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(plan.threads));  // one per thread
+  std::atomic<std::size_t> done{0};
+  auto work = [&] {
+    // schedule(dynamic): the roll iteration costs more where the contact jumps.
+#pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
+    for (std::size_t i = 0; i < n_dy; ++i) rolls[i] = solve_case_roll(setup, plan.dy_m[i]);
+    // schedule(dynamic): flange cases cost several times tread cases.
+#pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
+    for (std::size_t task = 0; task < total; ++task) {
+      const std::size_t side = task / plan.cases(), rest = task % plan.cases();
+      const std::size_t i_dy = rest / n_second, i_second = rest % n_second;
+      WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
+      results[task] = solve_case_wheel(setup, side, plan.dy_m[i_dy], rolls[i_dy], plan.load_values[i_second], workspace);
+      done.fetch_add(1, std::memory_order_relaxed);
+    }
+  };
+  run_with_progress(work, done, total, progress);
+  return results;
+}
+
+tables::Table assemble(const TableConfig& config, const SweepSetup& setup, const SweepPlan& plan,
+                       const std::vector<CaseRoll>& rolls, const std::vector<CaseWheel>& results) {
   tables::Table table;
-  table.lateral_displacement_m = dy;
-  table.second_axis = config.load_values;
+  table.lateral_displacement_m = plan.dy_m;
+  table.second_axis = plan.load_values;
   table.second_axis_name = load_axis_name(config.load_kind);
+  table.second_axis_units = config.load_kind == LoadKind::Approach ? "m" : "N";
   table.strip_samples = config.strip_samples;
+  table.n_slots = config.patch_slots;
   table.allocate();
+  const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size();
   for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
     for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
-      const WheelContact& right = results[i_dy * n_second + i_second];
-      const WheelContact& left = mirrored ? results[(n_dy - 1 - i_dy) * n_second + i_second]
-                                          : results[n_dy * n_second + i_dy * n_second + i_second];
-      store_wheel(table, i_dy, i_second, 0, right);
-      store_wheel(table, i_dy, i_second, 1, left);
+      const CaseWheel& right = results[i_dy * n_second + i_second];
+      // Mirrored: the left wheel at dy is the right wheel at -dy (index n_dy - 1 - i_dy of a symmetric axis).
+      const CaseWheel& left = plan.mirrored ? results[(n_dy - 1 - i_dy) * n_second + i_second]
+                                            : results[plan.cases() + i_dy * n_second + i_second];
+      store_case_wheel(table, setup, i_dy, i_second, 0, right);
+      store_case_wheel(table, setup, i_dy, i_second, 1, left);
       const std::size_t c = i_dy * n_second + i_second;
-      table.roll_rad[c] = roll[i_dy];
-      table.rolling_radius_difference_m[c] = right.rigid_contact.rolling_radius_m - left.rigid_contact.rolling_radius_m;
+      table.roll_rad[c] = rolls[i_dy].roll_rad;
+      table.rolling_radius_difference_m[c] =
+          right.contact.rigid_contact.rolling_radius_m - left.contact.rigid_contact.rolling_radius_m;
     }
-  // ---- provenance ----
+  return table;
+}
+
+std::string utc_now() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = static_cast<std::time_t>(std::atoll(epoch));
+  char text[32];
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+void add_provenance(tables::Table& table, const TableConfig& config, const SweepSetup& setup, const SweepPlan& plan,
+                    const GeneratorInfo& info) {
   auto& text = table.text_attributes;
   text["generator"] = "ctab";
   text["generator_version"] = info.version;
   text["git_commit"] = info.git_commit;
+  text["compiler"] = info.compiler;
+  text["build_flags"] = info.build_flags;
   text["config"] = config.text;
   text["config_source"] = config.source;
   text["created_utc"] = utc_now();
   text["wheel_profile"] = config.wheel;
   text["rail_profile"] = config.rail;
-  text["wheel_profile_sha256"] = sha256_hex(wheel.z_samples().data(), wheel.z_samples().size() * sizeof(double));
-  text["rail_profile_sha256"] = sha256_hex(rail.z_samples().data(), rail.z_samples().size() * sizeof(double));
+  text["wheel_profile_sha256"] = sha256_hex(setup.wheel->z_samples().data(), setup.wheel->z_samples().size() * sizeof(double));
+  text["rail_profile_sha256"] = sha256_hex(setup.rail->z_samples().data(), setup.rail->z_samples().size() * sizeof(double));
   text["rail_inclination"] = config.inclination_text;
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
   text["method"] = config.method == NormalMethod::Hertz ? "hertz" : "mim1d";
-  text["mirrored"] = mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
+  text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;
   number["youngs_modulus_Pa"] = config.material.youngs_modulus_Pa;
   number["poisson_ratio"] = config.material.poisson_ratio;
   number["strip_width_m"] = config.strip_width_m;
-  number["threads"] = threads;
   number["gauge_m"] = config.track.gauge_m;
   number["nominal_radius_m"] = config.track.nominal_radius_m;
+  table.integer_attributes["threads"] = plan.threads;
+}
+
+}  // namespace
+
+tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info, const ProgressCallback& progress) {
+  const SweepSetup setup = make_sweep_setup(config);
+  const SweepPlan plan = make_plan(config, info);
+  std::vector<CaseRoll> rolls;
+  const std::vector<CaseWheel> results = sweep(setup, plan, rolls, progress);
+  tables::Table table = assemble(config, setup, plan, rolls, results);
+  table.jumps = tables::detect_jumps(table);
+  add_provenance(table, config, setup, plan, info);
   return table;
 }
 

@@ -1,28 +1,62 @@
 #pragma once
-//! The in-memory contact table: the contract between the generator (writes) and lookup (reads).
+//! The in-memory contact table, schema 2: the contract between the generator (writes) and lookup (reads).
 //! Layout and units are documented in tables/README.md; every array is row-major (C order) with the shape
-//! given next to it. SI units throughout.
-#include <array>
+//! given next to it. SI units throughout (m, N, Pa, rad).
+//!
+//! Frames. Each wheel's quantities are in its own side frame (README "Track and wheelset"): y lateral, + towards
+//! the field side of that rail; z vertical, + downwards. Forces are those of the wheel on the rail.
+//! Identity (tested on every case of a table): for the vertical-load axis, sum over a wheel's present patches of
+//! force_vertical_N equals the prescribed vertical load to 1e-9 relative; for the normal-load axis the sum of
+//! normal_force_N equals the prescribed normal load.
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "ctab/tables/case_status.hpp"
+
 namespace ctab::tables {
 
-inline constexpr int kSchemaVersion = 1;   //!< readers reject any other version
-inline constexpr std::size_t kWheels = 2;  //!< index 0: right wheel, 1: left wheel
-inline constexpr std::size_t kSlots = 3;   //!< patch slots: 0 tread, 1 flange, 2 spare
-inline constexpr std::array<const char*, kSlots> kSlotNames = {"tread", "flange", "spare"};
+inline constexpr int kSchemaVersion = 2;          //!< readers reject any other version
+inline constexpr std::size_t kWheels = 2;         //!< index 0: right wheel, 1: left wheel
+inline constexpr std::size_t kDefaultSlots = 3;   //!< patch slots unless the config asks for more
+inline constexpr std::size_t kMaxSlots = 16;      //!< most patch slots a table may have
+inline constexpr std::size_t kMaxStripSamples = 4096;  //!< most strip-profile samples per patch
 
-//! Per-patch scalar quantities, each an array of shape (n_dy x n_second x kWheels x kSlots).
+//! How a patch changes between two neighbouring lateral shifts (a cell of the dy axis).
+enum class JumpKind : std::uint8_t {
+  Appears = 1,     //!< the slot is empty at dy_low and holds a patch at dy_high
+  Disappears = 2,  //!< the reverse
+  Moves = 3,       //!< present at both, but the contact point on the rail moves by more than the jump threshold
+};
+
+//! One contact jump: between lateral_displacement_m[i_dy] and [i_dy + 1], at second-axis index i_second, for one
+//! wheel and slot. Lookup never interpolates a patch quantity across such a cell.
+struct Jump {
+  std::uint32_t i_second = 0;
+  std::uint8_t wheel = 0;
+  std::uint8_t slot = 0;
+  std::uint32_t i_dy = 0;  //!< the jump lies in (dy[i_dy], dy[i_dy + 1])
+  JumpKind kind = JumpKind::Moves;
+};
+
+//! Per-patch scalar quantities, each an array of shape (n_dy x n_second x kWheels x n_slots).
+//! Every value is 0 where `present` is 0.
 struct PatchQuantities {
-  std::vector<std::uint8_t> present;          //!< 1 where the slot holds a patch
-  std::vector<double> normal_force_N;         //!< [N]
+  std::vector<std::uint8_t> present;          //!< 1 where the slot holds a patch, else 0
+  std::vector<double> normal_force_N;         //!< resultant normal force [N]
+  std::vector<double> force_lateral_N;        //!< lateral component on the rail in the side frame, + to the field side [N]
+  std::vector<double> force_vertical_N;       //!< vertical component on the rail, + downwards [N]
   std::vector<double> area_m2;                //!< [m^2]
   std::vector<double> max_pressure_Pa;        //!< [Pa]
   std::vector<double> approach_m;             //!< normal approach of the patch [m]
-  std::vector<double> contact_angle_rad;      //!< direction of the patch's resultant normal force [rad]
+  //! Direction of the resultant normal force as reported by the solver: the load-weighted mean rail inclination
+  //! over the patch's strips (< 0 on the gauge side). The force components use plane_angle_rad instead
+  //! (lateral = -N sin(plane), vertical = N cos(plane)); the two angles differ on a curved patch [rad]
+  std::vector<double> contact_angle_rad;
+  std::vector<double> plane_angle_rad;        //!< inclination of the contact plane in which s is measured [rad]
+  std::vector<double> s_origin_y_rail_m;      //!< rail point where s = 0 (lateral) [m]
+  std::vector<double> s_origin_z_rail_m;      //!< rail point where s = 0 (vertical, + down) [m]
   std::vector<double> y_wheel_m;              //!< contact point on the wheel profile (tape circle origin) [m]
   std::vector<double> y_rail_m;               //!< contact point on the rail profile (head top origin) [m]
   std::vector<double> y_cop_rail_m;           //!< centre of pressure on the rail profile [m]
@@ -30,8 +64,8 @@ struct PatchQuantities {
   std::vector<double> semi_axis_a_m;          //!< equivalent ellipse, rolling direction [m]
   std::vector<double> semi_axis_b_m;          //!< equivalent ellipse, lateral [m]
   std::vector<double> s_min_m, s_max_m;       //!< lateral extent of the patch in its contact plane [m]
-  //! Strip profiles resampled on n_samples points evenly spread over [s_min, s_max], shape
-  //! (n_dy x n_second x kWheels x kSlots x n_samples).
+  //! Strip profiles resampled on strip_samples points evenly spread over [s_min, s_max], shape
+  //! (n_dy x n_second x kWheels x n_slots x strip_samples).
   std::vector<double> strip_half_length_m;    //!< a(s) [m]
   std::vector<double> strip_peak_pressure_Pa; //!< p0(s) [Pa]
 };
@@ -39,35 +73,48 @@ struct PatchQuantities {
 struct Table {
   std::vector<double> lateral_displacement_m;  //!< axis 0, uniform, strictly increasing [m] (n_dy)
   std::string second_axis_name;                //!< "vertical_load_N", "normal_load_N" or "approach_m"
-  std::vector<double> second_axis;             //!< axis 1 values in the unit of its name (n_second >= 1)
-  std::size_t strip_samples = 0;               //!< n_samples
+  std::string second_axis_units;               //!< "N" or "m"
+  std::vector<double> second_axis;             //!< axis 1, strictly increasing, in second_axis_units (n_second >= 1)
+  std::size_t n_slots = kDefaultSlots;         //!< patch slots per wheel (1..kMaxSlots)
+  std::size_t strip_samples = 0;               //!< samples per strip profile (2..kMaxStripSamples)
   std::vector<double> roll_rad;                //!< wheelset roll (n_dy x n_second) [rad]
-  std::vector<double> rolling_radius_difference_m;  //!< r_right - r_left at the first patch (n_dy x n_second) [m]
-  std::vector<std::int8_t> status;             //!< solve status per wheel (n_dy x n_second x kWheels)
+  std::vector<double> rolling_radius_difference_m;  //!< r_right - r_left at the rigid contact points (n_dy x n_second) [m]
+  std::vector<CaseStatus> status;              //!< per wheel (n_dy x n_second x kWheels)
   PatchQuantities patch;
-  std::map<std::string, std::string> text_attributes;    //!< provenance (see README)
-  std::map<std::string, double> number_attributes;       //!< provenance numbers (material, threads, ...)
+  std::vector<Jump> jumps;                     //!< sorted by (i_second, wheel, slot, i_dy)
+  std::map<std::string, std::string> text_attributes;      //!< provenance, UTF-8 (see README)
+  std::map<std::string, double> number_attributes;         //!< provenance numbers (material, ...)
+  std::map<std::string, std::int64_t> integer_attributes;  //!< provenance integers (threads, ...)
 
   [[nodiscard]] std::size_t n_dy() const noexcept { return lateral_displacement_m.size(); }
   [[nodiscard]] std::size_t n_second() const noexcept { return second_axis.size(); }
   [[nodiscard]] std::size_t cases() const noexcept { return n_dy() * n_second(); }
-  //! Index of (dy, second, wheel, slot) in the patch arrays.
-  [[nodiscard]] std::size_t patch_index(std::size_t i_dy, std::size_t i_second, std::size_t wheel, std::size_t slot) const noexcept {
-    return ((i_dy * n_second() + i_second) * kWheels + wheel) * kSlots + slot;
+  //! Index of (dy, second, wheel) in `status`.
+  [[nodiscard]] std::size_t wheel_index(std::size_t i_dy, std::size_t i_second, std::size_t wheel) const noexcept {
+    return (i_dy * n_second() + i_second) * kWheels + wheel;
   }
-  //! Sizes every array for the axes and strip_samples already set (fills zeros).
+  //! Index of (dy, second, wheel, slot) in the patch arrays.
+  [[nodiscard]] std::size_t patch_index(std::size_t i_dy, std::size_t i_second, std::size_t wheel,
+                                        std::size_t slot) const noexcept {
+    return wheel_index(i_dy, i_second, wheel) * n_slots + slot;
+  }
+  //! Sizes every array for the axes, n_slots and strip_samples already set (fills zeros, status Converged).
   void allocate();
 };
+
+//! Finds the jumps of a table from its presence flags and rail contact points: a slot that appears or
+//! disappears between neighbours, or whose y_rail_m moves by more than max(1 mm, 10 dy steps).
+[[nodiscard]] std::vector<Jump> detect_jumps(const Table& table);
 
 //! Outcome of reading or writing a table (no exceptions in this module).
 enum class TableStatus : std::int8_t {
   Ok = 0,
   CannotOpen = -1,
   NotATable = -2,          //!< not HDF5, or truncated
-  WrongSchemaVersion = -3,
+  WrongSchemaVersion = -3, //!< includes schema 1 (the message says how to regenerate)
   MissingDataset = -4,
   WrongShape = -5,
-  InvalidContent = -6,     //!< e.g. a non-uniform or non-increasing axis
+  InvalidContent = -6,     //!< non-finite or out-of-range values, bad axes, unknown status, bad attributes
   WriteFailed = -7,
 };
 
@@ -77,10 +124,13 @@ struct TableResult {
   [[nodiscard]] bool ok() const noexcept { return status == TableStatus::Ok; }
 };
 
-//! Writes to `path + ".tmp-<pid>"`, then renames onto `path`: an existing table is replaced only on success,
+//! Writes to `temporary_path(path)`, then renames onto `path`: an existing table is replaced only on success,
 //! and a failed or interrupted write never leaves a partial table under `path`.
 [[nodiscard]] TableResult write_table(const Table& table, const std::string& path);
-//! Reads and validates a table (schema version, every dataset present with the right shape, axes).
+//! The temporary file write_table uses for `path` in this process: `path + ".tmp-<pid>"`.
+[[nodiscard]] std::string temporary_path(const std::string& path);
+//! Reads and validates a table: schema version, every dataset present with the right shape, axes, attributes
+//! (checked before anything is allocated from them), and contents (finite values, status values, presence 0/1).
 [[nodiscard]] TableResult read_table(const std::string& path, Table& table);
 
 }  // namespace ctab::tables

@@ -32,6 +32,7 @@ struct TableConfig {
   std::vector<double> load_values;         //!< second axis, or one fixed value [N or m]
   bool second_axis = false;                //!< true when the load or approach is an axis of the table
   std::size_t strip_samples = 32;          //!< points of the resampled strip profiles per patch
+  std::size_t patch_slots = 3;             //!< patch slots per wheel in the table ([output] patch_slots, 1..16)
   std::size_t key_line(const std::string& key) const;  //!< source line of a key (0 if unknown)
   std::vector<std::pair<std::string, std::size_t>> key_lines;
 };

@@ -2,28 +2,89 @@
 //! The parallel contact-table generator: every case (lateral shift x load or approach, each wheel) solved with
 //! the wheel-rail contact solver, in OpenMP over the flattened case list.
 //!
-//! Set-up (serial, may throw InputError): profiles, track, the process-wide kernel and Hertz tables. The
-//! parallel region has one task per case with a dynamic schedule (the cost varies tenfold between tread and
+//! Set-up (serial, may throw InputError): make_sweep_setup loads the profiles, places them on the track and
+//! builds the process-wide kernel and Hertz tables. One table case (one lateral shift and one load value) is
+//! solved by solve_table_case, which `ctab solve --config FILE --dy X` uses as well; generate_table runs the same
+//! steps (solve_case_roll, solve_case_wheel) over the whole grid.
+//!
+//! The parallel region has one task per case with a dynamic schedule (the cost varies tenfold between tread and
 //! flange cases) and one WheelContactWorkspace per thread (indexed by omp_get_thread_num(); results do not
 //! depend on it); every task writes only its own preallocated result slot, nothing is reduced across cases,
-//! no I/O happens and no exception leaves the region (a failure becomes the case's status). The table is
-//! therefore bit-identical for any number of threads. When the two sides are mirror images (one wheel and one
-//! rail profile for both) and the lateral axis is symmetric, only the right wheel is solved: the left wheel at
-//! dy is the right wheel at -dy (the file says so in its `mirrored` attribute).
-#include <atomic>
+//! no I/O happens and no exception leaves the region (a failure becomes the case's status, SolverException for
+//! an exception). The table is therefore bit-identical for any number of threads. When the two sides are mirror
+//! images (one wheel and one rail profile for both) and the lateral axis is symmetric, only the right wheel is
+//! solved: the left wheel at dy is the right wheel at -dy (the file says so in its `mirrored` attribute).
+#include <array>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/tables/table.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
 
 namespace ctab::gen {
 
 struct GeneratorInfo {
   std::string version = "unknown";  //!< generator version (provenance)
   std::string git_commit = "unknown";
+  std::string compiler = "unknown";     //!< compiler id and version (CTAB_COMPILER)
+  std::string build_flags = "unknown";  //!< build type and flags (CTAB_BUILD_FLAGS)
   int threads = 1;                  //!< OpenMP threads for the sweep
 };
+
+//! Everything a table case needs, built once from a config (serial; may throw InputError). Movable: the
+//! profiles live behind pointers, so `side` stays valid.
+struct SweepSetup {
+  std::unique_ptr<const ProfileTable> wheel, rail;  //!< the profiles actually used (both sides)
+  std::unique_ptr<const SideGeometry> side;         //!< profiles on the track (one side frame; the left mirrored)
+  double E_star_Pa = 0.0;                           //!< effective modulus of the two bodies [Pa]
+  WheelRailOptions options;                         //!< method and strip width
+  ContactMode mode = ContactMode::Wheelset;
+  LoadKind load_kind = LoadKind::VerticalForce;
+};
+
+//! Builds the set-up of a config; throws InputError naming the config key (profiles, strip width).
+[[nodiscard]] SweepSetup make_sweep_setup(const TableConfig& config);
+
+//! Rigid wheelset roll at a lateral shift: 0 in single-wheel mode. Never throws (an exception of the root finder
+//! gives converged = false).
+struct CaseRoll {
+  double roll_rad = 0.0;
+  bool converged = true;
+};
+[[nodiscard]] CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m) noexcept;
+
+//! One wheel of a case in its own side frame (wheel 0 right: shift +dy, roll +phi; wheel 1 left: -dy, -phi).
+//! Never throws: a solver exception gives an empty contact and `exception = true`; a roll that did not converge
+//! gives MaxIterations.
+struct CaseWheel {
+  WheelContact contact;
+  bool exception = false;  //!< the solver threw (tables::CaseStatus::SolverException)
+};
+[[nodiscard]] CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
+                                         double load_value, WheelContactWorkspace& workspace) noexcept;
+
+//! Exactly one table case: the roll, both wheels and the rolling radius difference, as generate_table computes
+//! them (bit-identical to the table's values for the right wheel; for a mirrored table the left wheel of the file
+//! is the right wheel at -dy).
+struct CaseSolution {
+  double dy_m = 0.0;
+  double load_value = 0.0;                   //!< in the unit of the second axis [N or m]
+  CaseRoll roll;
+  std::array<CaseWheel, tables::kWheels> wheels;   //!< 0 right, 1 left
+  double rolling_radius_difference_m = 0.0;  //!< r_right - r_left at the rigid contact points [m]
+};
+[[nodiscard]] CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value);
+
+//! Table status of a solver status (every shared value checked at compile time).
+[[nodiscard]] tables::CaseStatus case_status(SolveStatus status) noexcept;
+
+//! Stores one wheel of one case in the table: status, patches in slots (tread 0, flange 1, further patches in
+//! the next free slots in order of y_rail), force components, s origin, strip profiles. More patches than slots:
+//! the case gets SlotOverflow and keeps no patch (force is never dropped silently).
+void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
+                      std::size_t wheel, const CaseWheel& solved);
 
 //! Progress observer, called from the calling thread only (about every 0.1 s) with cases done and total.
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;

@@ -1,0 +1,37 @@
+// Contact jumps along the lateral axis (the rule is in table.hpp and tables/README.md).
+#include <algorithm>
+#include <cmath>
+
+#include "ctab/tables/table.hpp"
+
+namespace ctab::tables {
+
+std::vector<Jump> detect_jumps(const Table& table) {
+  std::vector<Jump> jumps;
+  const auto& dy = table.lateral_displacement_m;
+  if (dy.size() < 2) return jumps;
+  const double threshold_m = std::max(1e-3, 10.0 * (dy[1] - dy[0]));  // max(1 mm, 10 dy steps)
+  const auto& present = table.patch.present;
+  const auto& y_rail = table.patch.y_rail_m;
+  for (std::size_t i_second = 0; i_second < table.n_second(); ++i_second)
+    for (std::size_t wheel = 0; wheel < kWheels; ++wheel)
+      for (std::size_t slot = 0; slot < table.n_slots; ++slot)
+        for (std::size_t i_dy = 0; i_dy + 1 < dy.size(); ++i_dy) {
+          const std::size_t low = table.patch_index(i_dy, i_second, wheel, slot);
+          const std::size_t high = table.patch_index(i_dy + 1, i_second, wheel, slot);
+          JumpKind kind{};
+          if (present[low] == 0 && present[high] != 0)
+            kind = JumpKind::Appears;
+          else if (present[low] != 0 && present[high] == 0)
+            kind = JumpKind::Disappears;
+          else if (present[low] != 0 && std::abs(y_rail[high] - y_rail[low]) > threshold_m)
+            kind = JumpKind::Moves;
+          else
+            continue;
+          jumps.push_back({static_cast<std::uint32_t>(i_second), static_cast<std::uint8_t>(wheel),
+                           static_cast<std::uint8_t>(slot), static_cast<std::uint32_t>(i_dy), kind});
+        }
+  return jumps;
+}
+
+}  // namespace ctab::tables
