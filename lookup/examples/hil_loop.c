@@ -2,8 +2,9 @@
  * oscillating laterally through the flange jump, for a given simulated time. One prelookup per wheelset, reused
  * for both wheels. Reports the worst and mean step time against the 1 ms step.
  *
- *   ctab_hil_loop TABLE.blob [--seconds S] [--amplitude M] [--frequency HZ]
- */
+ *   ctab_hil_loop TABLE.blob [--seconds S] [--amplitude M] [--frequency HZ] [--require-budget]
+ * Exit code 1 if a query failed, or with --require-budget if a step took longer than 1 ms (on a real-time
+ * machine; a shared workstation may preempt the loop). */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>
@@ -24,15 +25,17 @@ static double now_s(void) {
 
 int main(int argc, char** argv) {
   double seconds = 10.0, amplitude_m = 8e-3, frequency_hz = 1.0;
+  int require_budget = 0;
   const char* path = NULL;
   for (int i = 1; i < argc; ++i) {
     if (i + 1 < argc && strcmp(argv[i], "--seconds") == 0) seconds = atof(argv[++i]);
     else if (i + 1 < argc && strcmp(argv[i], "--amplitude") == 0) amplitude_m = atof(argv[++i]);
     else if (i + 1 < argc && strcmp(argv[i], "--frequency") == 0) frequency_hz = atof(argv[++i]);
+    else if (strcmp(argv[i], "--require-budget") == 0) require_budget = 1;
     else path = argv[i];
   }
   if (path == NULL || !(seconds > 0.0)) {
-    fprintf(stderr, "usage: ctab_hil_loop TABLE.blob [--seconds S] [--amplitude M] [--frequency HZ]\n");
+    fprintf(stderr, "usage: ctab_hil_loop TABLE.blob [--seconds S] [--amplitude M] [--frequency HZ] [--require-budget]\n");
     return 2;
   }
   ctab_table* table = NULL;
@@ -73,5 +76,5 @@ int main(int argc, char** argv) {
   printf("  flange slot of wheel 0 switched %ld times; mean normal force of wheel 0 %.1f N\n", patch_changes,
          force_sum / (double)steps);
   ctab_table_close(table);
-  return failed == 0 && worst < STEP_S ? 0 : 1;
+  return failed == 0 && (!require_budget || worst < STEP_S) ? 0 : 1;
 }
