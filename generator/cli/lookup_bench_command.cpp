@@ -73,7 +73,7 @@ Figures measure(const lookup::Table& table, const Points& p, bool shared_prelook
     table.query(where, static_cast<std::int32_t>(i & 1u), r);
     if (shared_prelookup) table.query(where, static_cast<std::int32_t>(1u - (i & 1u)), r);
     const auto stop = Clock::now();
-    sink += r.patch[0].normal_force_N;
+    sink += r.patch[0].q[CTAB_NORMAL_FORCE_N];
     times[i] = std::max(0.0, ns_between(start, stop) - overhead_ns) / (shared_prelookup ? 2.0 : 1.0);
   }
   const auto start = Clock::now();
@@ -81,7 +81,7 @@ Figures measure(const lookup::Table& table, const Points& p, bool shared_prelook
     table.prelookup(p.dy[i], p.second[i], where);
     table.query(where, static_cast<std::int32_t>(i & 1u), r);
     if (shared_prelookup) table.query(where, static_cast<std::int32_t>(1u - (i & 1u)), r);
-    sink += r.patch[0].normal_force_N;
+    sink += r.patch[0].q[CTAB_NORMAL_FORCE_N];
   }
   const double batch = ns_between(start, Clock::now()) / static_cast<double>(n) / (shared_prelookup ? 2.0 : 1.0);
   Figures f{quantile(times, 0.5), quantile(times, 0.9999), *std::max_element(times.begin(), times.end()), batch};
@@ -115,8 +115,8 @@ void compare_single(const lookup::Table& full, const lookup::Table& single, cons
       single.query(where, wheel, rb);
       for (std::int32_t s = 0; s < ra.n_slots; ++s) {
         std::array<double, CTAB_QUANTITIES> va{}, vb{};
-        std::memcpy(va.data(), &ra.patch[s], sizeof(double) * CTAB_QUANTITIES);
-        std::memcpy(vb.data(), &rb.patch[s], sizeof(double) * CTAB_QUANTITIES);
+        std::copy(std::begin(ra.patch[s].q), std::end(ra.patch[s].q), va.begin());
+        std::copy(std::begin(rb.patch[s].q), std::end(rb.patch[s].q), vb.begin());
         for (std::size_t q = 0; q < CTAB_QUANTITIES; ++q) scale[q] = std::max(scale[q], std::fabs(va[q]));
         a.push_back(va);
         b.push_back(vb);

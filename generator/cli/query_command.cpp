@@ -62,10 +62,8 @@ int run_query(const QueryOptions& o) {
   nlohmann::json patches = nlohmann::json::array();
   for (std::int32_t s = 0; s < r.n_slots; ++s) {
     if (!r.patch[s].present) continue;
-    double values[CTAB_QUANTITIES];
-    std::memcpy(values, &r.patch[s], sizeof values);
     nlohmann::json patch = {{"slot", s}};
-    for (std::size_t q = 0; q < CTAB_QUANTITIES; ++q) patch[kQuantityNames[q]] = values[q];
+    for (std::size_t q = 0; q < CTAB_QUANTITIES; ++q) patch[kQuantityNames[q]] = r.patch[s].q[q];
     if (o.strips && table.strip_samples() > 0) {
       std::vector<double> sv(table.strip_samples()), a(sv.size()), p0(sv.size());
       std::uint32_t count = 0;

@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     const int present = results[0].n_slots > 1 ? results[0].patch[1].present : 0;
     if (last_present >= 0 && present != last_present) ++patch_changes;
     last_present = present;
-    for (int s = 0; s < results[0].n_slots; ++s) force_sum += results[0].patch[s].normal_force_N;
+    for (int s = 0; s < results[0].n_slots; ++s) force_sum += results[0].patch[s].q[CTAB_NORMAL_FORCE_N];
   }
   printf("ctab_hil_loop: %ld steps of %d wheels (%.1f simulated s at 1 kHz), amplitude %.1f mm at %.2f Hz\n", steps,
          2 * WHEELSETS, seconds, amplitude_m * 1e3, frequency_hz);

@@ -24,8 +24,7 @@ LINEAR, PCHIP = 0, 1
 
 
 class _Patch(ctypes.Structure):
-    _fields_ = [(name, ctypes.c_double) for name in QUANTITIES] + [("present", ctypes.c_int32),
-                                                                     ("reserved", ctypes.c_int32)]
+    _fields_ = [("q", ctypes.c_double * len(QUANTITIES)), ("present", ctypes.c_int32), ("reserved", ctypes.c_int32)]
 
 
 class _Location(ctypes.Structure):
@@ -95,7 +94,7 @@ class Result:
         self.dy_m, self.second = raw.dy_m, raw.second
         self.roll_rad, self.rolling_radius_difference_m = raw.roll_rad, raw.rolling_radius_difference_m
         self.neighbour_status = list(raw.neighbour_status)
-        self.patches = {s: {name: getattr(raw.patch[s], name) for name in QUANTITIES}
+        self.patches = {s: dict(zip(QUANTITIES, raw.patch[s].q))
                         for s in range(raw.n_slots) if raw.patch[s].present}
 
 

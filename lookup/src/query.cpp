@@ -8,13 +8,21 @@
 #include "blend.hpp"
 #include "ctab/lookup/table.hpp"
 
+// On x86-64 Linux with GCC the query is compiled twice, for baseline x86-64 and for x86-64-v3 (AVX2, FMA), and
+// the loader picks one once (ifunc); elsewhere it is compiled for the build's target only.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && !defined(CTAB_LOOKUP_NO_CLONES)
+#define CTAB_LOOKUP_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define CTAB_LOOKUP_CLONES
+#endif
+
 namespace ctab::lookup {
 
 namespace {
 
 constexpr double kClampTolerance = 1e-9;  // in cells: points this close outside the range count as inside
 
-static_assert(sizeof(ctab_patch) == (kQuantities + 1) * sizeof(double), "ctab_patch: quantities then flags");
+static_assert(sizeof(ctab_patch) == (kQuantities + 1) * sizeof(double), "ctab_patch: no padding (ctypes, memcmp)");
 
 void zero_result(ctab_result& out, std::uint32_t slots, ctab_status status) noexcept {
   out.status = status;
@@ -26,8 +34,7 @@ void zero_result(ctab_result& out, std::uint32_t slots, ctab_status status) noex
   for (std::size_t s = slots; s < kMaxSlots; ++s) out.patch[s].present = 0;
 }
 
-void write_patch(ctab_patch& patch, const double* values, double presence) noexcept {
-  std::memcpy(&patch, values, kQuantities * sizeof(double));
+void set_presence(ctab_patch& patch, double presence) noexcept {
   patch.present = presence > 0.5 ? 1 : 0;
   patch.reserved = 0;
 }
@@ -79,92 +86,96 @@ void Table::prelookup(double dy_m, double second, ctab_location& out) const noex
 }
 
 template <typename T, bool kCubic>
-void Table::dy_row(const T* values, const T* slopes, std::size_t lo_case, std::size_t hi_case, std::size_t rule_index,
-                   double f, double* row, double* presence) const noexcept {
-  const double step = f >= 0.5 ? 1.0 : 0.0;
-  // Hermite basis on the unit cell (slopes are per metre, hence the factor ddy).
-  const double f2 = f * f, f3 = f2 * f;
-  const double h00 = 2.0 * f3 - 3.0 * f2 + 1.0, h01 = -2.0 * f3 + 3.0 * f2;
-  const double h10 = (f3 - 2.0 * f2 + f) * ddy_, h11 = (f3 - f2) * ddy_;
-  for (std::size_t s = 0; s < n_slots_; ++s) {
-    const std::uint8_t rule = rules_[rule_index + s];
-    const double w_hi = detail::upper_weight(rule, f, step);
-    const double w_lo = 1.0 - w_hi;
-    presence[s] = w_lo * present_[lo_case + s] + w_hi * present_[hi_case + s];
-    const T* lo = values + (lo_case + s) * kQuantities;
-    const T* hi = values + (hi_case + s) * kQuantities;
-    double* v = row + s * kQuantities;
-    if constexpr (kCubic) {
-      const double cubic = detail::kF[rule];  // 1 where the cell interpolates
-      const double a0 = cubic * h00 + (1.0 - cubic) * w_lo, a1 = cubic * h01 + (1.0 - cubic) * w_hi;
-      const double b0 = cubic * h10, b1 = cubic * h11;
-      const T* d_lo = slopes + (lo_case + s) * kQuantities;
-      const T* d_hi = slopes + (hi_case + s) * kQuantities;
-      for (std::size_t q = 0; q < kQuantities; ++q)
-        v[q] = a0 * static_cast<double>(lo[q]) + a1 * static_cast<double>(hi[q]) + b0 * static_cast<double>(d_lo[q]) +
-               b1 * static_cast<double>(d_hi[q]);
-    } else {
-      for (std::size_t q = 0; q < kQuantities; ++q)
-        v[q] = w_lo * static_cast<double>(lo[q]) + w_hi * static_cast<double>(hi[q]);
-    }
+[[gnu::always_inline]] inline double Table::dy_slot(const T* __restrict lo, const T* __restrict hi, const T* __restrict slope_lo,
+                      const T* __restrict slope_hi, std::size_t slot, const DyBasis& basis,
+                      double* __restrict v) const noexcept {
+  const auto rule = static_cast<std::uint8_t>(lo[off_rule_ + slot]);
+  const double w_hi = detail::upper_weight(rule, basis.f, basis.step), w_lo = 1.0 - w_hi;
+  const T* __restrict a = lo + slot * kQuantities;
+  const T* __restrict b = hi + slot * kQuantities;
+  if constexpr (kCubic) {
+    const double cubic = detail::kF[rule];  // 1 where the cell interpolates
+    const double a0 = cubic * basis.h00 + (1.0 - cubic) * w_lo, a1 = cubic * basis.h01 + (1.0 - cubic) * w_hi;
+    const double b0 = cubic * basis.h10, b1 = cubic * basis.h11;
+    const T* __restrict da = slope_lo + slot * kQuantities;
+    const T* __restrict db = slope_hi + slot * kQuantities;
+    for (std::size_t q = 0; q < kQuantities; ++q)
+      v[q] = a0 * static_cast<double>(a[q]) + a1 * static_cast<double>(b[q]) + b0 * static_cast<double>(da[q]) +
+             b1 * static_cast<double>(db[q]);
+  } else {
+    for (std::size_t q = 0; q < kQuantities; ++q) v[q] = w_lo * static_cast<double>(a[q]) + w_hi * static_cast<double>(b[q]);
   }
+  return w_lo * static_cast<double>(lo[off_present_ + slot]) + w_hi * static_cast<double>(hi[off_present_ + slot]);
 }
 
 template <typename T, bool kCubic>
-void Table::query_rows(const ctab_location& where, std::uint32_t wheel, ctab_result& out) const noexcept {
-  const T* values = nullptr;
-  const T* slopes = nullptr;
-  if constexpr (sizeof(T) == sizeof(float)) {
-    values = values_f_.data();
-    slopes = slopes_f_.data();
-  } else {
-    values = values_d_.data();
-    slopes = slopes_d_.data();
-  }
-  double row0[kMaxSlots * kQuantities], presence0[kMaxSlots];
-  const std::size_t lo0 = patch_(where.i_dy, where.i_second, wheel), hi0 = patch_(where.i_dy + 1, where.i_second, wheel);
-  dy_row<T, kCubic>(values, slopes, lo0, hi0, lo0, where.f_dy, row0, presence0);
-  if (second_.size() == 1) {
-    for (std::size_t s = 0; s < n_slots_; ++s) write_patch(out.patch[s], row0 + s * kQuantities, presence0[s]);
-    return;
-  }
-  double row1[kMaxSlots * kQuantities], presence1[kMaxSlots];
-  const std::size_t lo1 = patch_(where.i_dy, where.i_second + 1, wheel);
-  const std::size_t hi1 = patch_(where.i_dy + 1, where.i_second + 1, wheel);
-  dy_row<T, kCubic>(values, slopes, lo1, hi1, lo1, where.f_dy, row1, presence1);
-  const double g = where.f_second;
-  for (std::size_t s = 0; s < n_slots_; ++s) {
-    const double w1 = detail::row_weight(presence0[s], presence1[s], g), w0 = 1.0 - w1;
-    double v[kQuantities];
-    for (std::size_t q = 0; q < kQuantities; ++q) v[q] = w0 * row0[s * kQuantities + q] + w1 * row1[s * kQuantities + q];
-    write_patch(out.patch[s], v, w0 * presence0[s] + w1 * presence1[s]);
-  }
-}
-
-void Table::wheelset(const ctab_location& where, ctab_result& out) const noexcept {
+[[gnu::always_inline]] inline void Table::wheelset(const ctab_location& where, std::uint32_t wheel, const DyBasis& basis, ctab_result& out) const noexcept {
+  const T* records_ = records<T>();
+  const T* slopes = slope_records<T>();
   const std::size_t n_2 = second_.size();
   const std::size_t i2_hi = n_2 > 1 ? where.i_second + 1 : where.i_second;
-  const double f = where.f_dy, g = n_2 > 1 ? where.f_second : 0.0;
-  const bool cubic = interpolation_ == CTAB_PCHIP;
-  const double f2 = f * f, f3 = f2 * f;
-  const double a0 = cubic ? 2.0 * f3 - 3.0 * f2 + 1.0 : 1.0 - f, a1 = 1.0 - a0;
-  const double b0 = cubic ? (f3 - 2.0 * f2 + f) * ddy_ : 0.0, b1 = cubic ? (f3 - f2) * ddy_ : 0.0;
-  double result[2] = {0.0, 0.0};
-  const std::size_t rows[2] = {where.i_second, i2_hi};
-  const double row_weights[2] = {1.0 - g, g};
-  for (std::size_t r = 0; r < 2; ++r) {
-    const std::size_t lo = (where.i_dy * n_2 + rows[r]) * 2, hi = ((where.i_dy + 1) * n_2 + rows[r]) * 2;
+  const double g = n_2 > 1 ? where.f_second : 0.0;
+  const double a0 = kCubic ? basis.h00 : 1.0 - basis.f, a1 = kCubic ? basis.h01 : basis.f;
+  const std::size_t cases[4] = {case_(where.i_dy, where.i_second, wheel), case_(where.i_dy + 1, where.i_second, wheel),
+                                case_(where.i_dy, i2_hi, wheel), case_(where.i_dy + 1, i2_hi, wheel)};
+  double row[2][2];
+  for (std::size_t r = 0; r < 2; ++r)
     for (std::size_t k = 0; k < 2; ++k) {
-      double v = a0 * wheelset_[lo + k] + a1 * wheelset_[hi + k];
-      if (cubic) v += b0 * wheelset_slopes_[lo + k] + b1 * wheelset_slopes_[hi + k];
-      result[k] += row_weights[r] * v;
+      const std::size_t lo = cases[2 * r] * stride_ + off_roll_ + k, hi = cases[2 * r + 1] * stride_ + off_roll_ + k;
+      row[r][k] = a0 * static_cast<double>(records_[lo]) + a1 * static_cast<double>(records_[hi]);
+      if constexpr (kCubic)
+        row[r][k] += basis.h10 * static_cast<double>(slopes[lo]) + basis.h11 * static_cast<double>(slopes[hi]);
     }
-  }
-  out.roll_rad = result[0];
-  out.rolling_radius_difference_m = result[1];
+  out.roll_rad = (1.0 - g) * row[0][0] + g * row[1][0];
+  out.rolling_radius_difference_m = (1.0 - g) * row[0][1] + g * row[1][1];
+  std::int8_t statuses[4];
+  for (std::size_t k = 0; k < 4; ++k)
+    statuses[k] = static_cast<std::int8_t>(records_[cases[k] * stride_ + off_status_]);
+  std::memcpy(out.neighbour_status, statuses, sizeof statuses);
+  out.worst_case_status = std::min(std::min(statuses[0], statuses[1]), std::min(statuses[2], statuses[3]));
 }
 
-void Table::query(const ctab_location& where, std::int32_t wheel, ctab_result& out) const noexcept {
+template <typename T, bool kCubic>
+[[gnu::always_inline]] inline void Table::query_rows(const ctab_location& where, std::uint32_t wheel, ctab_result& out) const noexcept {
+  const T* records_ = records<T>();
+  const T* slopes = slope_records<T>();
+  // Hermite basis on the unit cell (slopes are per metre, hence the factor ddy).
+  DyBasis basis;
+  const double f = where.f_dy, f2 = f * f, f3 = f2 * f;
+  basis.f = f;
+  basis.step = f >= 0.5 ? 1.0 : 0.0;
+  basis.h00 = 2.0 * f3 - 3.0 * f2 + 1.0;
+  basis.h01 = -2.0 * f3 + 3.0 * f2;
+  basis.h10 = (f3 - 2.0 * f2 + f) * ddy_;
+  basis.h11 = (f3 - f2) * ddy_;
+  const std::size_t lo0 = case_(where.i_dy, where.i_second, wheel) * stride_;
+  const std::size_t hi0 = case_(where.i_dy + 1, where.i_second, wheel) * stride_;
+  const T* slope_lo0 = kCubic ? slopes + lo0 : nullptr;
+  const T* slope_hi0 = kCubic ? slopes + hi0 : nullptr;
+  if (second_.size() == 1) {  // straight into the result
+    for (std::size_t s = 0; s < n_slots_; ++s)
+      set_presence(out.patch[s],
+                   dy_slot<T, kCubic>(records_ + lo0, records_ + hi0, slope_lo0, slope_hi0, s, basis, out.patch[s].q));
+  } else {
+    const std::size_t lo1 = case_(where.i_dy, where.i_second + 1, wheel) * stride_;
+    const std::size_t hi1 = case_(where.i_dy + 1, where.i_second + 1, wheel) * stride_;
+    const T* slope_lo1 = kCubic ? slopes + lo1 : nullptr;
+    const T* slope_hi1 = kCubic ? slopes + hi1 : nullptr;
+    const double g = where.f_second;
+    double v1[kQuantities];
+    for (std::size_t s = 0; s < n_slots_; ++s) {
+      double* v0 = out.patch[s].q;
+      const double p0 = dy_slot<T, kCubic>(records_ + lo0, records_ + hi0, slope_lo0, slope_hi0, s, basis, v0);
+      const double p1 = dy_slot<T, kCubic>(records_ + lo1, records_ + hi1, slope_lo1, slope_hi1, s, basis, v1);
+      const double w1 = detail::row_weight(p0, p1, g), w0 = 1.0 - w1;
+      for (std::size_t q = 0; q < kQuantities; ++q) v0[q] = w0 * v0[q] + w1 * v1[q];
+      set_presence(out.patch[s], w0 * p0 + w1 * p1);
+    }
+  }
+  wheelset<T, kCubic>(where, wheel, basis, out);
+}
+
+CTAB_LOOKUP_CLONES void Table::query(const ctab_location& where, std::int32_t wheel, ctab_result& out) const noexcept {
   if (!loaded()) {
     zero_result(out, 0, CTAB_NOT_LOADED);
     return;
@@ -177,7 +188,7 @@ void Table::query(const ctab_location& where, std::int32_t wheel, ctab_result& o
     return;
   }
   const auto w = static_cast<std::uint32_t>(wheel);
-  const bool single = !values_f_.empty();
+  const bool single = single_precision();
   if (interpolation_ == CTAB_PCHIP) {
     if (single) query_rows<float, true>(where, w, out);
     else query_rows<double, true>(where, w, out);
@@ -186,15 +197,6 @@ void Table::query(const ctab_location& where, std::int32_t wheel, ctab_result& o
     else query_rows<double, false>(where, w, out);
   }
   for (std::size_t s = n_slots_; s < kMaxSlots; ++s) out.patch[s].present = 0;
-  wheelset(where, out);
-  const std::size_t n_2 = second_.size();
-  const std::size_t i2_hi = n_2 > 1 ? where.i_second + 1 : where.i_second;
-  const std::int8_t statuses[4] = {status_[(where.i_dy * n_2 + where.i_second) * kWheels + w],
-                                   status_[((where.i_dy + 1) * n_2 + where.i_second) * kWheels + w],
-                                   status_[(where.i_dy * n_2 + i2_hi) * kWheels + w],
-                                   status_[((where.i_dy + 1) * n_2 + i2_hi) * kWheels + w]};
-  std::memcpy(out.neighbour_status, statuses, sizeof statuses);
-  out.worst_case_status = std::min(std::min(statuses[0], statuses[1]), std::min(statuses[2], statuses[3]));
   out.status = where.status;
   out.n_slots = static_cast<std::int32_t>(n_slots_);
   out.dy_m = where.dy_m;

@@ -8,13 +8,6 @@
 
 namespace ctab::lookup {
 
-namespace {
-
-constexpr std::size_t kSMin = offsetof(ctab_patch, s_min_m) / sizeof(double);
-constexpr std::size_t kSMax = offsetof(ctab_patch, s_max_m) / sizeof(double);
-
-}  // namespace
-
 ctab_status Table::strip_profile(const ctab_location& where, std::int32_t wheel, std::int32_t slot, double* s_m,
                                  double* half_length_m, double* peak_pressure_Pa, std::uint32_t capacity,
                                  std::uint32_t* count) const noexcept {
@@ -33,30 +26,28 @@ ctab_status Table::strip_profile(const ctab_location& where, std::int32_t wheel,
   double weights[4], presence[2];
   const double step = where.f_dy >= 0.5 ? 1.0 : 0.0;
   for (std::size_t r = 0; r < 2; ++r) {
-    cases[2 * r] = patch_(where.i_dy, rows[r], w) + s;
-    cases[2 * r + 1] = patch_(where.i_dy + 1, rows[r], w) + s;
-    const double w_hi = detail::upper_weight(rules_[cases[2 * r]], where.f_dy, step);
+    cases[2 * r] = case_(where.i_dy, rows[r], w);
+    cases[2 * r + 1] = case_(where.i_dy + 1, rows[r], w);
+    const auto rule = static_cast<std::uint8_t>(field(cases[2 * r], off_rule_ + s));
+    const double w_hi = detail::upper_weight(rule, where.f_dy, step);
     weights[2 * r] = 1.0 - w_hi;
     weights[2 * r + 1] = w_hi;
-    presence[r] = (1.0 - w_hi) * present_[cases[2 * r]] + w_hi * present_[cases[2 * r + 1]];
+    presence[r] = (1.0 - w_hi) * field(cases[2 * r], off_present_ + s) + w_hi * field(cases[2 * r + 1], off_present_ + s);
   }
   const double w1 = n_2 > 1 ? detail::row_weight(presence[0], presence[1], where.f_second) : 0.0;
   for (std::size_t k = 0; k < 4; ++k) weights[k] *= k < 2 ? 1.0 - w1 : w1;
   if ((1.0 - w1) * presence[0] + w1 * presence[1] < 0.5 || strip_samples_ == 0) return where.status == CTAB_CLAMPED ? CTAB_CLAMPED : CTAB_OK;
 
-  const bool single = !values_f_.empty();
-  const auto value = [&](std::size_t c, std::size_t q) {
-    return single ? static_cast<double>(values_f_[c * kQuantities + q]) : values_d_[c * kQuantities + q];
-  };
+  const bool single = single_precision();
   const auto sample = [&](bool peak, std::size_t c, std::size_t i) {
-    const std::size_t k = c * strip_samples_ + i;
+    const std::size_t k = (c * n_slots_ + s) * strip_samples_ + i;  // strip arrays are per patch
     if (single) return static_cast<double>(peak ? strip_p0_f_[k] : strip_a_f_[k]);
     return peak ? strip_p0_d_[k] : strip_a_d_[k];
   };
   double s_min = 0.0, s_max = 0.0;
   for (std::size_t k = 0; k < 4; ++k) {
-    s_min += weights[k] * value(cases[k], kSMin);
-    s_max += weights[k] * value(cases[k], kSMax);
+    s_min += weights[k] * field(cases[k], s * kQuantities + CTAB_S_MIN_M);
+    s_max += weights[k] * field(cases[k], s * kQuantities + CTAB_S_MAX_M);
   }
   const double spacing = (s_max - s_min) / static_cast<double>(strip_samples_ - 1);
   for (std::size_t i = 0; i < strip_samples_; ++i) {

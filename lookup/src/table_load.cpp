@@ -1,13 +1,17 @@
-// Table::load: copies a validated TableData into the query layout and precomputes, per dy cell and slot, the
-// blending rule (README "Jumps"), and with PCHIP the Fritsch-Carlson slopes at every node.
+// Table::load: copies a validated TableData into one aligned record per case (lookup/include/ctab/lookup/table.hpp)
+// and precomputes, per dy cell and slot, the blending rule (README "Jumps"), and with PCHIP the Fritsch-Carlson
+// slopes at every node.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "ctab/lookup/table.hpp"
 
 namespace ctab::lookup {
 
 namespace {
+
+constexpr std::size_t kAlignBytes = 64;  // a cache line
 
 bool succeeded(std::int8_t case_status) noexcept { return case_status >= 0; }  // converged or no contact
 
@@ -28,6 +32,18 @@ CellRule cell_rule(std::int8_t status_lo, std::int8_t status_hi, bool present_lo
   return CellRule::Nearest;
 }
 
+//! Copies `from` into `to` converted to T, starting at a 64-byte boundary.
+template <typename T, typename Aligned>
+void store_aligned(const std::vector<double>& from, Aligned& to) {
+  if (from.empty()) return;
+  constexpr std::size_t pad = kAlignBytes / sizeof(T);
+  to.storage.assign(from.size() + pad, T{});
+  const auto address = reinterpret_cast<std::uintptr_t>(to.storage.data());
+  to.skip = (kAlignBytes - address % kAlignBytes) % kAlignBytes / sizeof(T);
+  std::transform(from.begin(), from.end(), to.storage.begin() + static_cast<std::ptrdiff_t>(to.skip),
+                 [](double v) { return static_cast<T>(v); });
+}
+
 template <typename T>
 void store(const std::vector<double>& from, std::vector<T>& to) {
   to.resize(from.size());
@@ -42,75 +58,78 @@ LoadResult Table::load(const TableData& data, const LoadOptions& options) {
   if (!result.ok()) return result;
 
   const std::size_t n_dy = data.n_dy(), n_2 = data.n_second(), n_slots = data.n_slots;
-  const std::size_t patches = n_dy * n_2 * kWheels * n_slots;
+  const std::size_t cases = n_dy * n_2 * kWheels;
   const double ddy = (data.dy_m.back() - data.dy_m.front()) / static_cast<double>(n_dy - 1);
+  // Record layout, padded to whole cache lines of the storage type.
+  const std::size_t per_line = kAlignBytes / (options.single_precision ? sizeof(float) : sizeof(double));
+  off_present_ = n_slots * kQuantities;
+  off_rule_ = off_present_ + n_slots;
+  off_status_ = off_rule_ + n_slots;
+  off_roll_ = off_status_ + 1;
+  stride_ = (off_roll_ + 2 + per_line - 1) / per_line * per_line;
 
-  // Values (zero where absent), presence, rules.
-  std::vector<double> values(data.quantities);
-  present_.resize(patches);
-  for (std::size_t p = 0; p < patches; ++p) {
-    present_[p] = data.present[p] ? 1.0 : 0.0;
-    if (!data.present[p]) std::fill_n(values.begin() + static_cast<std::ptrdiff_t>(p * kQuantities), kQuantities, 0.0);
-  }
-  std::vector<std::uint8_t> jump(patches, 0);  // by the patch index of the cell's lower end
+  std::vector<std::uint8_t> jump(data.present.size(), 0);  // by the patch index of the cell's lower end
   for (const Jump& j : data.jumps) jump[data.patch_index(j.i_dy, j.i_second, j.wheel, j.slot)] = 1;
-  rules_.assign(patches, static_cast<std::uint8_t>(CellRule::Nearest));
-  for (std::size_t i = 0; i + 1 < n_dy; ++i)
+  std::vector<double> records(cases * stride_, 0.0);
+  for (std::size_t i = 0; i < n_dy; ++i)
     for (std::size_t i2 = 0; i2 < n_2; ++i2)
-      for (std::size_t w = 0; w < kWheels; ++w)
+      for (std::size_t w = 0; w < kWheels; ++w) {
+        const std::size_t c = data.case_index(i, i2, w);
+        double* record = records.data() + c * stride_;
         for (std::size_t s = 0; s < n_slots; ++s) {
-          const std::size_t lo = data.patch_index(i, i2, w, s), hi = data.patch_index(i + 1, i2, w, s);
-          rules_[lo] = static_cast<std::uint8_t>(cell_rule(data.case_status[data.case_index(i, i2, w)],
-                                                           data.case_status[data.case_index(i + 1, i2, w)],
-                                                           data.present[lo] != 0, data.present[hi] != 0, jump[lo] != 0));
+          const std::size_t p = data.patch_index(i, i2, w, s);
+          if (data.present[p])  // absent patches stay zero
+            std::copy_n(data.quantities.begin() + static_cast<std::ptrdiff_t>(p * kQuantities), kQuantities,
+                        record + s * kQuantities);
+          record[off_present_ + s] = data.present[p] ? 1.0 : 0.0;
+          CellRule rule = CellRule::Nearest;  // the last dy value starts no cell
+          if (i + 1 < n_dy)
+            rule = cell_rule(data.case_status[c], data.case_status[data.case_index(i + 1, i2, w)], data.present[p] != 0,
+                             data.present[data.patch_index(i + 1, i2, w, s)] != 0, jump[p] != 0);
+          record[off_rule_ + s] = static_cast<double>(rule);
         }
-
-  // Wheelset quantities: roll and delta r per (i_dy, i_second), always interpolable.
-  wheelset_.resize(n_dy * n_2 * 2);
-  for (std::size_t c = 0; c < n_dy * n_2; ++c) {
-    wheelset_[2 * c] = data.roll_rad[c];
-    wheelset_[2 * c + 1] = data.rolling_radius_difference_m[c];
-  }
+        record[off_status_] = data.case_status[c];
+        record[off_roll_] = data.roll_rad[i * n_2 + i2];
+        record[off_roll_ + 1] = data.rolling_radius_difference_m[i * n_2 + i2];
+      }
 
   std::vector<double> slopes;
   if (options.interpolation == CTAB_PCHIP) {
-    const std::size_t row = n_2 * kWheels * n_slots;  // patches per dy value
-    slopes.assign(values.size(), 0.0);
+    const std::size_t row = n_2 * kWheels;  // cases per dy value
+    slopes.assign(records.size(), 0.0);
+    const auto interpolable = [&](std::size_t c, std::size_t s) {
+      return records[c * stride_ + off_rule_ + s] == static_cast<double>(CellRule::Interpolate);
+    };
+    const auto slope = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
+      const double v = records[c * stride_ + k];
+      const double left = has_left ? (v - records[(c - row) * stride_ + k]) / ddy : 0.0;
+      const double right = has_right ? (records[(c + row) * stride_ + k] - v) / ddy : 0.0;
+      return node_slope(has_left, left, has_right, right);
+    };
     for (std::size_t i = 0; i < n_dy; ++i)
       for (std::size_t k = 0; k < row; ++k) {
-        const std::size_t p = i * row + k;
-        const bool has_left = i >= 1 && rules_[p - row] == static_cast<std::uint8_t>(CellRule::Interpolate);
-        const bool has_right = i + 1 < n_dy && rules_[p] == static_cast<std::uint8_t>(CellRule::Interpolate);
-        for (std::size_t q = 0; q < kQuantities; ++q) {
-          const double v = values[p * kQuantities + q];
-          const double left = has_left ? (v - values[(p - row) * kQuantities + q]) / ddy : 0.0;
-          const double right = has_right ? (values[(p + row) * kQuantities + q] - v) / ddy : 0.0;
-          slopes[p * kQuantities + q] = node_slope(has_left, left, has_right, right);
+        const std::size_t c = i * row + k;
+        for (std::size_t s = 0; s < n_slots; ++s) {
+          const bool has_left = i >= 1 && interpolable(c - row, s), has_right = i + 1 < n_dy && interpolable(c, s);
+          for (std::size_t q = 0; q < kQuantities; ++q)
+            slopes[c * stride_ + s * kQuantities + q] = slope(c, s * kQuantities + q, has_left, has_right);
         }
-      }
-    const std::size_t ws_row = n_2 * 2;
-    wheelset_slopes_.assign(wheelset_.size(), 0.0);
-    for (std::size_t i = 0; i < n_dy; ++i)
-      for (std::size_t k = 0; k < ws_row; ++k) {
-        const std::size_t p = i * ws_row + k;
-        const double left = i >= 1 ? (wheelset_[p] - wheelset_[p - ws_row]) / ddy : 0.0;
-        const double right = i + 1 < n_dy ? (wheelset_[p + ws_row] - wheelset_[p]) / ddy : 0.0;
-        wheelset_slopes_[p] = node_slope(i >= 1, left, i + 1 < n_dy, right);
+        for (std::size_t k2 = off_roll_; k2 < off_roll_ + 2; ++k2)  // roll and delta r: always interpolable
+          slopes[c * stride_ + k2] = slope(c, k2, i >= 1, i + 1 < n_dy);
       }
   }
 
   if (options.single_precision) {
-    store(values, values_f_);
-    store(slopes, slopes_f_);
+    store_aligned<float>(records, records_f_);
+    store_aligned<float>(slopes, slopes_f_);
     store(data.strip_half_length_m, strip_a_f_);
     store(data.strip_peak_pressure_Pa, strip_p0_f_);
   } else {
-    values_d_ = std::move(values);
-    slopes_d_ = std::move(slopes);
+    store_aligned<double>(records, records_d_);
+    store_aligned<double>(slopes, slopes_d_);
     strip_a_d_ = data.strip_half_length_m;
     strip_p0_d_ = data.strip_peak_pressure_Pa;
   }
-  status_ = data.case_status;
   second_ = data.second;
   second_kind_ = data.second_axis;
   interpolation_ = options.interpolation;
@@ -123,10 +142,25 @@ LoadResult Table::load(const TableData& data, const LoadOptions& options) {
   return result;
 }
 
+template <>
+const double* Table::records<double>() const noexcept { return records_d_.data(); }
+template <>
+const float* Table::records<float>() const noexcept { return records_f_.data(); }
+template <>
+const double* Table::slope_records<double>() const noexcept { return slopes_d_.data(); }
+template <>
+const float* Table::slope_records<float>() const noexcept { return slopes_f_.data(); }
+
+double Table::field(std::size_t c, std::size_t offset) const noexcept {
+  return single_precision() ? static_cast<double>(records<float>()[c * stride_ + offset])
+                            : records<double>()[c * stride_ + offset];
+}
+
 std::size_t Table::memory_bytes() const noexcept {
-  return sizeof(*this) + (values_d_.size() + slopes_d_.size() + present_.size() + wheelset_.size() +
-                          wheelset_slopes_.size() + second_.size() + strip_a_d_.size() + strip_p0_d_.size()) * sizeof(double) +
-         (values_f_.size() + slopes_f_.size() + strip_a_f_.size() + strip_p0_f_.size()) * sizeof(float) + rules_.size() + status_.size();
+  return sizeof(*this) +
+         (records_d_.storage.size() + slopes_d_.storage.size() + second_.size() + strip_a_d_.size() + strip_p0_d_.size()) *
+             sizeof(double) +
+         (records_f_.storage.size() + slopes_f_.storage.size() + strip_a_f_.size() + strip_p0_f_.size()) * sizeof(float);
 }
 
 }  // namespace ctab::lookup

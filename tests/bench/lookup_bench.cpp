@@ -27,17 +27,20 @@ Table load(const LoadOptions& options) {
   return table;
 }
 
-std::vector<double> random_dy(const Table& table) {
+//! Random points over the whole dy range (cold: most records come from L2/L3), or within +-0.5 mm of the centre
+//! (hot: a few cells, as a wheel in a simulation that moves a little per step).
+std::vector<double> random_dy(const Table& table, bool hot = false) {
   std::mt19937_64 random(42);
-  std::uniform_real_distribution<double> uniform(table.dy_min(), table.dy_max());
+  const double centre = 0.5 * (table.dy_min() + table.dy_max());
+  std::uniform_real_distribution<double> uniform(hot ? centre - 0.5e-3 : table.dy_min(), hot ? centre + 0.5e-3 : table.dy_max());
   std::vector<double> dy(1 << 16);
   for (double& v : dy) v = uniform(random);
   return dy;
 }
 
-void query_one_wheel(benchmark::State& state, LoadOptions options) {
+void query_one_wheel(benchmark::State& state, LoadOptions options, bool hot) {
   const Table table = load(options);
-  const std::vector<double> dy = random_dy(table);
+  const std::vector<double> dy = random_dy(table, hot);
   const double second = table.second_axis().front();
   ctab_result r;
   std::memset(&r, 0, sizeof r);
@@ -72,9 +75,11 @@ void query_two_wheels(benchmark::State& state, LoadOptions options) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * 2);  // wheel queries
 }
 
-BENCHMARK_CAPTURE(query_one_wheel, linear_double, LoadOptions{CTAB_LINEAR, false});
-BENCHMARK_CAPTURE(query_one_wheel, linear_single, LoadOptions{CTAB_LINEAR, true});
-BENCHMARK_CAPTURE(query_one_wheel, pchip_double, LoadOptions{CTAB_PCHIP, false});
+BENCHMARK_CAPTURE(query_one_wheel, linear_double, LoadOptions{CTAB_LINEAR, false}, false);
+BENCHMARK_CAPTURE(query_one_wheel, linear_single, LoadOptions{CTAB_LINEAR, true}, false);
+BENCHMARK_CAPTURE(query_one_wheel, pchip_double, LoadOptions{CTAB_PCHIP, false}, false);
+BENCHMARK_CAPTURE(query_one_wheel, linear_double_hot, LoadOptions{CTAB_LINEAR, false}, true);
+BENCHMARK_CAPTURE(query_one_wheel, pchip_double_hot, LoadOptions{CTAB_PCHIP, false}, true);
 BENCHMARK_CAPTURE(query_two_wheels, linear_double, LoadOptions{CTAB_LINEAR, false});
 BENCHMARK_CAPTURE(query_two_wheels, pchip_double, LoadOptions{CTAB_PCHIP, false});
 

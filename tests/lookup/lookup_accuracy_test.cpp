@@ -100,16 +100,16 @@ class LookupAccuracy : public ::testing::Test {
           if (!lookup_has_patch_nearby && !present) continue;  // no patch anywhere near: nothing to compare
           ++out.jump_queries;
           out.jump_presence_mismatch += present != found;
-          out.jump_force_of_wheel.add(std::fabs(r.patch[s].normal_force_N - direct.patch.normal_force_N[s]) / total, dy);
+          out.jump_force_of_wheel.add(std::fabs(r.patch[s].q[CTAB_NORMAL_FORCE_N] - direct.patch.normal_force_N[s]) / total, dy);
           continue;
         }
         out.smooth_presence_mismatch += present != found;
         if (!present) continue;
-        errors.force.add(std::fabs(r.patch[s].normal_force_N / direct.patch.normal_force_N[s] - 1.0), dy);
-        errors.area.add(std::fabs(r.patch[s].area_m2 / direct.patch.area_m2[s] - 1.0), dy);
-        errors.point.add(std::max({std::fabs(r.patch[s].y_wheel_m - direct.patch.y_wheel_m[s]),
-                                   std::fabs(r.patch[s].y_rail_m - direct.patch.y_rail_m[s]),
-                                   std::fabs(r.patch[s].y_cop_rail_m - direct.patch.y_cop_rail_m[s])}), dy);
+        errors.force.add(std::fabs(r.patch[s].q[CTAB_NORMAL_FORCE_N] / direct.patch.normal_force_N[s] - 1.0), dy);
+        errors.area.add(std::fabs(r.patch[s].q[CTAB_AREA_M2] / direct.patch.area_m2[s] - 1.0), dy);
+        errors.point.add(std::max({std::fabs(r.patch[s].q[CTAB_Y_WHEEL_M] - direct.patch.y_wheel_m[s]),
+                                   std::fabs(r.patch[s].q[CTAB_Y_RAIL_M] - direct.patch.y_rail_m[s]),
+                                   std::fabs(r.patch[s].q[CTAB_Y_COP_RAIL_M] - direct.patch.y_cop_rail_m[s])}), dy);
       }
     }
     std::printf("%s, default table (dy step 0.1 mm), 1000 random dy, right wheel, cells without a jump:\n",

@@ -139,7 +139,7 @@ TEST(LookupBlob, SinglePrecisionHalvesTheValuesAndStaysClose) {
   for (std::size_t i = 0; i < a.size(); ++i)
     for (int s = 0; s < 3; ++s) {
       EXPECT_EQ(a[i].patch[s].present, b[i].patch[s].present);
-      EXPECT_NEAR(a[i].patch[s].normal_force_N, b[i].patch[s].normal_force_N, 1e-6 * std::fabs(a[i].patch[s].normal_force_N) + 1e-12);
+      EXPECT_NEAR(a[i].patch[s].q[CTAB_NORMAL_FORCE_N], b[i].patch[s].q[CTAB_NORMAL_FORCE_N], 1e-6 * std::fabs(a[i].patch[s].q[CTAB_NORMAL_FORCE_N]) + 1e-12);
     }
 }
 

@@ -13,7 +13,7 @@ namespace {
 using test::make_synthetic;
 using test::synthetic_value;
 
-constexpr std::size_t kYRail = offsetof(ctab_patch, y_rail_m) / sizeof(double);
+constexpr std::size_t kYRail = CTAB_Y_RAIL_M;
 
 Table load(const TableData& data, ctab_interpolation interpolation = CTAB_LINEAR) {
   Table table;
@@ -32,9 +32,7 @@ ctab_result query(const Table& table, double dy, double second, int wheel) {
 }
 
 double quantity(const ctab_patch& patch, std::size_t q) {
-  double values[kQuantities];
-  std::memcpy(values, &patch, sizeof values);
-  return values[q];
+  return patch.q[q];
 }
 
 TEST(LookupQuery, LinearDataIsReproducedOffGridInBothModes) {
@@ -63,13 +61,13 @@ TEST(LookupQuery, AppearingPatchTakesTheNearerNeighbourInsideTheJumpCell) {
     EXPECT_EQ(table.rule(18, 0, 0, 0), CellRule::Interpolate);
     const ctab_result below = query(table, 6.49e-3, 0.0, 0);
     EXPECT_EQ(below.patch[1].present, 0);
-    EXPECT_EQ(below.patch[1].normal_force_N, 0.0);
+    EXPECT_EQ(below.patch[1].q[CTAB_NORMAL_FORCE_N], 0.0);
     const ctab_result above = query(table, 6.5e-3, 0.0, 0);
     EXPECT_EQ(above.patch[1].present, 1);
     for (std::size_t q = 0; q < kQuantities; ++q)  // exactly the upper neighbour (7 mm), not a blend
       EXPECT_EQ(quantity(above.patch[1], q), data.quantities[data.patch_index(19, 0, 0, 1) * kQuantities + q]);
     // The tread slot interpolates through the same cell.
-    EXPECT_NEAR(above.patch[0].normal_force_N, synthetic_value(0, 0, 0, 6.5e-3, 60e3), 1e-9);
+    EXPECT_NEAR(above.patch[0].q[CTAB_NORMAL_FORCE_N], synthetic_value(0, 0, 0, 6.5e-3, 60e3), 1e-9);
   }
 }
 
@@ -93,7 +91,7 @@ TEST(LookupQuery, FailedNeighbourIsNeverUsed) {
     EXPECT_EQ(r.patch[0].present, 1) << dy;
     EXPECT_LT(r.worst_case_status, 0);
     const double expected = dy < -8e-3 ? synthetic_value(0, 0, 0, -9e-3, 60e3) : synthetic_value(0, 0, 0, -7e-3, 60e3);
-    EXPECT_NEAR(r.patch[0].normal_force_N, expected, 1e-9) << dy;
+    EXPECT_NEAR(r.patch[0].q[CTAB_NORMAL_FORCE_N], expected, 1e-9) << dy;
   }
   EXPECT_EQ(query(table, -8.3e-3, 0.0, 1).worst_case_status, 0) << "the left wheel did not fail";
 }
@@ -104,28 +102,28 @@ TEST(LookupQuery, SecondAxisBlendsRowsOnlyWhereBothHaveThePatch) {
   // Linear in both axes where the patch exists in all four neighbours.
   const ctab_result r = query(table, 1.23e-3, 71e3, 0);
   ASSERT_EQ(r.status, CTAB_OK);
-  EXPECT_NEAR(r.patch[0].area_m2, synthetic_value(3, 0, 0, 1.23e-3, 71e3), 1e-9);
+  EXPECT_NEAR(r.patch[0].q[CTAB_AREA_M2], synthetic_value(3, 0, 0, 1.23e-3, 71e3), 1e-9);
   EXPECT_NEAR(r.second, 71e3, 0.0);
   // At dy = 7.2 mm the flange exists in row 0 (from 6.5 mm) but not in row 1 (from 7.5 mm): the nearer row wins.
   const ctab_result near0 = query(table, 7.2e-3, 69e3, 0), near1 = query(table, 7.2e-3, 71e3, 0);
   EXPECT_EQ(near0.patch[1].present, 1);
-  EXPECT_NEAR(near0.patch[1].normal_force_N, synthetic_value(0, 1, 0, 7.2e-3, 60e3), 1e-9);
+  EXPECT_NEAR(near0.patch[1].q[CTAB_NORMAL_FORCE_N], synthetic_value(0, 1, 0, 7.2e-3, 60e3), 1e-9);
   EXPECT_EQ(near1.patch[1].present, 0);
-  EXPECT_EQ(near1.patch[1].normal_force_N, 0.0);
+  EXPECT_EQ(near1.patch[1].q[CTAB_NORMAL_FORCE_N], 0.0);
 }
 
 TEST(LookupQuery, PchipDoesNotOvershootAStep) {
   TableData data = make_synthetic({.dy_min_m = 0.0, .dy_max_m = 10e-3});
-  const std::size_t q = offsetof(ctab_patch, area_m2) / sizeof(double);
+  const std::size_t q = CTAB_AREA_M2;
   for (std::size_t i = 0; i < data.n_dy(); ++i)
     data.quantities[data.patch_index(i, 0, 0, 0) * kQuantities + q] = i < 5 ? 1.0 : 2.0;
   const Table table = load(data, CTAB_PCHIP);
   for (double dy = 0.0; dy <= 10e-3; dy += 0.05e-3) {
-    const double v = query(table, dy, 0.0, 0).patch[0].area_m2;
+    const double v = query(table, dy, 0.0, 0).patch[0].q[CTAB_AREA_M2];
     EXPECT_GE(v, 1.0);
     EXPECT_LE(v, 2.0);
   }
-  EXPECT_DOUBLE_EQ(query(table, 2.5e-3, 0.0, 0).patch[0].area_m2, 1.0) << "flat data stays flat";
+  EXPECT_DOUBLE_EQ(query(table, 2.5e-3, 0.0, 0).patch[0].q[CTAB_AREA_M2], 1.0) << "flat data stays flat";
 }
 
 TEST(LookupQuery, StripProfileFollowsTheSlotRules) {

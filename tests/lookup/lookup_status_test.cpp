@@ -17,9 +17,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 void expect_finite_and_absent(const ctab_result& r) {
   for (int s = 0; s < CTAB_MAX_SLOTS; ++s) {
     EXPECT_EQ(r.patch[s].present, 0);
-    double values[kQuantities];
-    std::memcpy(values, &r.patch[s], sizeof values);
-    for (const double v : values) EXPECT_TRUE(std::isfinite(v));
+    for (const double v : r.patch[s].q) EXPECT_TRUE(std::isfinite(v));
   }
   EXPECT_TRUE(std::isfinite(r.roll_rad) && std::isfinite(r.rolling_radius_difference_m) && std::isfinite(r.dy_m));
 }
@@ -66,7 +64,7 @@ TEST(LookupStatus, OutOfRangeIsClampedToTheEdge) {
   table.prelookup(12e-3, 80e3, where);
   EXPECT_EQ(where.status, CTAB_OK) << "the last grid point is inside";
   table.query(where, 1, edge);
-  EXPECT_EQ(outside.patch[0].normal_force_N, edge.patch[0].normal_force_N);
+  EXPECT_EQ(outside.patch[0].q[CTAB_NORMAL_FORCE_N], edge.patch[0].q[CTAB_NORMAL_FORCE_N]);
   table.prelookup(-1.0, 0.0, where);
   EXPECT_EQ(where.status, CTAB_CLAMPED);
   EXPECT_EQ(where.i_dy, 0u);

@@ -22,7 +22,7 @@ constexpr std::array<Column, kQuantities> kColumns = {
     &tables::PatchQuantities::semi_axis_a_m,     &tables::PatchQuantities::semi_axis_b_m,
     &tables::PatchQuantities::s_min_m,           &tables::PatchQuantities::s_max_m};
 
-static_assert(offsetof(ctab_patch, s_max_m) == (kQuantities - 1) * sizeof(double));
+static_assert(CTAB_S_MAX_M == kQuantities - 1);
 static_assert(kMaxSlots == tables::kMaxSlots && kWheels == tables::kWheels);
 
 }  // namespace

@@ -21,7 +21,6 @@ extern "C" {
 #endif
 
 #define CTAB_MAX_SLOTS 16      /* most patch slots per wheel (= ctab::tables::kMaxSlots) */
-#define CTAB_QUANTITIES 18     /* doubles at the start of ctab_patch, in the order below */
 #define CTAB_WHEEL_RIGHT 0
 #define CTAB_WHEEL_LEFT 1
 
@@ -53,28 +52,34 @@ typedef struct ctab_open_options {
   int32_t single_precision; /* nonzero: store values as float (half the memory); a float blob always is */
 } ctab_open_options;
 
-/* One patch slot. The first CTAB_QUANTITIES members are doubles in this order (ctypes and loops may rely on it).
- * All zero where present == 0. Frames as in tables/README.md (each wheel in its own side frame). */
+/* Indices of the tabulated quantities in ctab_patch.q. Frames as in tables/README.md (each wheel in its own side
+ * frame: y lateral + to the field side, z vertical + down); forces are those of the wheel on the rail. */
+typedef enum ctab_quantity {
+  CTAB_NORMAL_FORCE_N = 0,          /* resultant normal force [N] */
+  CTAB_FORCE_LATERAL_N = 1,         /* lateral component on the rail, + to the field side [N] */
+  CTAB_FORCE_VERTICAL_N = 2,        /* vertical component on the rail, + downwards [N] */
+  CTAB_AREA_M2 = 3,                 /* contact area [m^2] */
+  CTAB_MAX_PRESSURE_PA = 4,         /* [Pa] */
+  CTAB_APPROACH_M = 5,              /* normal approach of the patch [m] */
+  CTAB_CONTACT_ANGLE_RAD = 6,       /* direction of the resultant force [rad] */
+  CTAB_PLANE_ANGLE_RAD = 7,         /* inclination of the contact plane in which s is measured [rad] */
+  CTAB_S_ORIGIN_Y_RAIL_M = 8,       /* rail point where s = 0, lateral [m] */
+  CTAB_S_ORIGIN_Z_RAIL_M = 9,       /* rail point where s = 0, vertical + down [m] */
+  CTAB_Y_WHEEL_M = 10,               /* contact point on the wheel profile [m] */
+  CTAB_Y_RAIL_M = 11,                /* contact point on the rail profile [m] */
+  CTAB_Y_COP_RAIL_M = 12,            /* centre of pressure on the rail profile [m] */
+  CTAB_ROLLING_RADIUS_M = 13,        /* [m] */
+  CTAB_SEMI_AXIS_A_M = 14,           /* equivalent ellipse, rolling direction [m] */
+  CTAB_SEMI_AXIS_B_M = 15,           /* equivalent ellipse, lateral [m] */
+  CTAB_S_MIN_M = 16,                 /* lateral extent of the patch in its contact plane [m] */
+  CTAB_S_MAX_M = 17,
+  CTAB_QUANTITIES = 18
+} ctab_quantity;
+
+/* One patch slot: every quantity (indexed by ctab_quantity), all zero where present == 0. */
 typedef struct ctab_patch {
-  double normal_force_N;     /* resultant normal force [N] */
-  double force_lateral_N;    /* lateral component on the rail, + to the field side [N] */
-  double force_vertical_N;   /* vertical component on the rail, + downwards [N] */
-  double area_m2;            /* contact area [m^2] */
-  double max_pressure_Pa;    /* [Pa] */
-  double approach_m;         /* normal approach of the patch [m] */
-  double contact_angle_rad;  /* direction of the resultant force [rad] */
-  double plane_angle_rad;    /* inclination of the contact plane in which s is measured [rad] */
-  double s_origin_y_rail_m;  /* rail point where s = 0, lateral [m] */
-  double s_origin_z_rail_m;  /* rail point where s = 0, vertical + down [m] */
-  double y_wheel_m;          /* contact point on the wheel profile [m] */
-  double y_rail_m;           /* contact point on the rail profile [m] */
-  double y_cop_rail_m;       /* centre of pressure on the rail profile [m] */
-  double rolling_radius_m;   /* [m] */
-  double semi_axis_a_m;      /* equivalent ellipse, rolling direction [m] */
-  double semi_axis_b_m;      /* equivalent ellipse, lateral [m] */
-  double s_min_m;            /* lateral extent of the patch in its contact plane [m] */
-  double s_max_m;
-  int32_t present;           /* 1: the slot holds a patch at the query point, 0: not */
+  double q[CTAB_QUANTITIES];
+  int32_t present; /* 1: the slot holds a patch at the query point, 0: not */
   int32_t reserved;
 } ctab_patch;
 
