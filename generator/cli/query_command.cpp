@@ -36,6 +36,9 @@ double second_value(const lookup::Table& table, const QueryOptions& o) {
   if (o.load_N && approach_axis) throw gen::Error(o.path + ": the second axis is approach_m; use --approach");
   if (o.approach_m && !approach_axis) throw gen::Error(o.path + ": the second axis is a load; use --load");
   const std::optional<double> given = approach_axis ? o.approach_m : o.load_N;
+  if (table.n_second() == 1 && given && *given != table.second_axis().front())
+    std::fprintf(stderr, "ctab query: note: the table has one %s value (%g); %g ignored\n",
+                 lookup::second_axis_name(table.second_axis_kind()), table.second_axis().front(), *given);
   if (table.n_second() == 1 || !given) return table.second_axis().front();
   return *given;
 }
