@@ -14,12 +14,14 @@
 #include "ctab/io/profile_io.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "ctab/tables/table.hpp"
+#include "ctab/tables/case_status.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;
 using ctab::tables::Table;
 using ctab::tables::TableStatus;
+using ctab::tables::CaseStatus;
 
 namespace {
 
@@ -76,6 +78,13 @@ void expect_same_data(const Table& a, const Table& b) {
   expect_bitwise_equal(p.semi_axis_a_m, q.semi_axis_a_m, "a");
   expect_bitwise_equal(p.strip_half_length_m, q.strip_half_length_m, "strip a");
   expect_bitwise_equal(p.strip_peak_pressure_Pa, q.strip_peak_pressure_Pa, "strip p0");
+  expect_bitwise_equal(p.force_lateral_N, q.force_lateral_N, "lateral force");
+  expect_bitwise_equal(p.force_vertical_N, q.force_vertical_N, "vertical force");
+  expect_bitwise_equal(p.plane_angle_rad, q.plane_angle_rad, "plane angle");
+  expect_bitwise_equal(p.s_origin_y_rail_m, q.s_origin_y_rail_m, "s origin y");
+  expect_bitwise_equal(p.s_origin_z_rail_m, q.s_origin_z_rail_m, "s origin z");
+  ASSERT_EQ(a.jumps.size(), b.jumps.size());
+  for (std::size_t i = 0; i < a.jumps.size(); ++i) EXPECT_EQ(a.jumps[i].i_dy, b.jumps[i].i_dy) << "jump " << i;
 }
 
 }  // namespace
@@ -92,6 +101,8 @@ TEST(Table, RoundTrip) {
   expect_same_data(table, back);
   EXPECT_EQ(back.text_attributes, table.text_attributes);
   EXPECT_EQ(back.number_attributes, table.number_attributes);
+  EXPECT_EQ(back.integer_attributes, table.integer_attributes);
+  EXPECT_EQ(back.jumps.size(), table.jumps.size());
   EXPECT_EQ(back.second_axis_name, "vertical_load_N");
   EXPECT_NE(back.text_attributes.at("config").find("vertical_load_N"), std::string::npos);
   EXPECT_EQ(back.text_attributes.at("wheel_profile_sha256").size(), 64u);
@@ -113,11 +124,11 @@ TEST(Table, GridPointEqualsDirectSolve) {
                                                   LoadKind::VerticalForce, 78.5e3, WheelRailOptions{});
     for (const auto& [wheel_index, contact] : {std::pair<std::size_t, const WheelContact*>{0, &right}, {1, &left}}) {
       double table_force = 0.0;
-      for (std::size_t slot = 0; slot < ctab::tables::kSlots; ++slot)
+      for (std::size_t slot = 0; slot < table.n_slots; ++slot)
         table_force += table.patch.normal_force_N[table.patch_index(i_dy, 1, wheel_index, slot)];
       EXPECT_EQ(table_force == 0.0, contact->patches.empty());
       EXPECT_NEAR(table_force, contact->normal_force_N, 1e-9 * contact->normal_force_N) << "dy " << dy;
-      EXPECT_EQ(table.status[(i_dy * 2 + 1) * 2 + wheel_index], static_cast<std::int8_t>(contact->status));
+      EXPECT_EQ(table.status[table.wheel_index(i_dy, 1, wheel_index)], case_status(contact->status));
       const ContactPatch& first = contact->patches.front();
       const std::size_t slot = first.zone == "flange" ? 1 : 0;
       const std::size_t k = table.patch_index(i_dy, 1, wheel_index, slot);
@@ -140,7 +151,7 @@ TEST(Table, BitIdenticalForOneAndTwoThreads) {
   expect_same_data(one, two);
   // Files: identical bytes once the two attributes that must differ (threads, creation time) agree.
   Table a = one, b = two;
-  a.number_attributes["threads"] = b.number_attributes["threads"] = 0;
+  a.integer_attributes["threads"] = b.integer_attributes["threads"] = 0;
   a.text_attributes["created_utc"] = b.text_attributes["created_utc"] = "fixed";
   const std::string pa = temp_path("one.h5"), pb = temp_path("two.h5");
   ASSERT_TRUE(ctab::tables::write_table(a, pa).ok());
@@ -221,4 +232,119 @@ TEST(Table, FailedWriteLeavesNoTableAndKeepsTheOldOne) {
   EXPECT_TRUE(ctab::tables::read_table(existing, back).ok());
   for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir()))
     EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << "temporary left: " << entry.path();
+}
+
+namespace {
+
+// The identity of tables/README.md on every case: over a wheel's present patches, sum force_vertical_N equals the
+// vertical load (vertical-load axis) or sum normal_force_N the normal load (normal-load axis). Returns the
+// largest relative residual.
+double identity_residual(const Table& table, bool vertical) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < table.n_dy(); ++i)
+    for (std::size_t j = 0; j < table.n_second(); ++j)
+      for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel) {
+        EXPECT_EQ(table.status[table.wheel_index(i, j, wheel)], CaseStatus::Converged) << "dy " << i << " wheel " << wheel;
+        double sum = 0.0;
+        for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
+          const std::size_t k = table.patch_index(i, j, wheel, slot);
+          sum += vertical ? table.patch.force_vertical_N[k] : table.patch.normal_force_N[k];
+          // The components are those of the normal force along the contact-plane normal.
+          EXPECT_NEAR(std::hypot(table.patch.force_lateral_N[k], table.patch.force_vertical_N[k]),
+                      table.patch.normal_force_N[k], 1e-12 * table.patch.normal_force_N[k]);
+        }
+        worst = std::max(worst, std::abs(sum - table.second_axis[j]) / table.second_axis[j]);
+      }
+  return worst;
+}
+
+}  // namespace
+
+TEST(Table, VerticalLoadIdentityOnEveryCaseOfTheDefaultTable) {
+  GeneratorInfo info;
+  info.threads = 2;
+  const Table table = generate_table(parse_table_config(kDefaultTableConfig, "default"), info);
+  ASSERT_EQ(table.cases(), 241u);
+  const double residual = identity_residual(table, true);
+  std::printf("default table: max relative residual of the vertical-load identity %.3g\n", residual);
+  EXPECT_LE(residual, 1e-9);
+  // The default table passes the reader's validation (what `ctab inspect` reports as valid).
+  const std::string path = temp_path("default.h5");
+  ASSERT_TRUE(ctab::tables::write_table(table, path).ok());
+  Table back;
+  const auto read = ctab::tables::read_table(path, back);
+  EXPECT_TRUE(read.ok()) << read.message;
+  EXPECT_FALSE(back.jumps.empty());
+}
+
+TEST(Table, NormalLoadIdentityOnEveryCaseOfALoadAxisTable) {
+  const Table table = generate_table(parse_table_config(R"(
+[solver]
+mode = "wheelset"
+[axes]
+lateral_displacement_m = { start = -8e-3, stop = 8e-3, step = 0.5e-3 }
+normal_load_N = [40e3, 80e3, 120e3]
+[output]
+strip_samples = 8
+)", "normal.toml"), GeneratorInfo{});
+  EXPECT_EQ(table.second_axis_name, "normal_load_N");
+  EXPECT_EQ(table.second_axis_units, "N");
+  EXPECT_LE(identity_residual(table, false), 1e-9);
+}
+
+TEST(Table, FlangeForcePushesTheRailToTheFieldSide) {
+  // Single-wheel mode, right wheel at dy = +7 mm: flange contact (slot 1) on the gauge side.
+  const Table table = generate_table(parse_table_config(R"(
+[solver]
+mode = "wheel"
+[axes]
+lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
+)", "flange.toml"), GeneratorInfo{});
+  const std::size_t k = table.patch_index(2, 0, 0, 1);
+  ASSERT_EQ(table.patch.present[k], 1);
+  EXPECT_LT(table.patch.plane_angle_rad[k], -0.5);   // steep gauge-side contact plane
+  EXPECT_GT(table.patch.force_lateral_N[k], 0.0);    // + towards the field side
+  EXPECT_GT(table.patch.force_vertical_N[k], 0.0);   // + down
+  EXPECT_LT(table.patch.contact_angle_rad[k], 0.0);  // negative on the gauge side
+  // s = 0 lies on the rail at the contact plane's tangent point: rail slope there = tan(plane angle).
+  const ProfileTable rail = load_profile("UIC60", ProfileRole::Rail, {});
+  for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
+    const std::size_t q = table.patch_index(2, 0, 0, slot);
+    if (!table.patch.present[q]) continue;
+    const ProfilePoint at = rail.at(table.patch.s_origin_y_rail_m[q]);
+    EXPECT_NEAR(std::atan(at.dz), table.patch.plane_angle_rad[q], 1e-9) << "slot " << slot;
+    EXPECT_DOUBLE_EQ(at.z, table.patch.s_origin_z_rail_m[q]);
+  }
+}
+
+TEST(Table, MorePatchesThanSlotsIsASlotOverflowNotALostForce) {
+  // One slot: every case with a flange patch overflows and keeps no patch.
+  const Table table = generate_table(parse_table_config(R"(
+[solver]
+mode = "wheel"
+[axes]
+lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
+[output]
+patch_slots = 1
+)", "one_slot.toml"), GeneratorInfo{});
+  EXPECT_EQ(table.n_slots, 1u);
+  EXPECT_EQ(table.status[table.wheel_index(2, 0, 0)], CaseStatus::SlotOverflow);
+  EXPECT_EQ(table.patch.present[table.patch_index(2, 0, 0, 0)], 0);
+  EXPECT_EQ(table.status[table.wheel_index(1, 0, 0)], CaseStatus::Converged);  // dy = 0: tread only
+}
+
+TEST(Table, SolveTableCaseEqualsTheTable) {
+  const TableConfig config = parse_table_config(kSmallConfig, "small.toml");
+  const SweepSetup setup = make_sweep_setup(config);
+  const Table& table = small_table(1);
+  const std::size_t i_dy = 12;
+  const CaseSolution solution = solve_table_case(setup, table.lateral_displacement_m[i_dy], 78.5e3);
+  EXPECT_EQ(solution.roll.roll_rad, table.roll_rad[i_dy * 2 + 1]);
+  Table one = table;
+  store_case_wheel(one, setup, i_dy, 1, 0, solution.wheels[0]);
+  for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
+    const std::size_t k = table.patch_index(i_dy, 1, 0, slot);
+    EXPECT_EQ(one.patch.normal_force_N[k], table.patch.normal_force_N[k]);
+    EXPECT_EQ(one.patch.force_lateral_N[k], table.patch.force_lateral_N[k]);
+  }
 }
