@@ -138,7 +138,9 @@ Command add_bench_command(CLI::App& parent) {
   generate->add_option("--repetitions", *repetitions, "runs per thread count")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  return {app, [seconds, solver, wheelrail, repetitions] {
+  const Command lookup = add_bench_lookup_subcommand(*app);
+  return {app, [seconds, solver, wheelrail, repetitions, lookup] {
+            if (lookup.app->parsed()) return lookup.run();
             if (solver->parsed()) return run_bench_solver(*seconds);
             if (wheelrail->parsed()) return run_bench_wheelrail(*seconds);
             return run_bench_generate(*repetitions);

@@ -18,5 +18,9 @@ Command add_geometry_command(CLI::App& parent);
 Command add_generate_command(CLI::App& parent);
 Command add_inspect_command(CLI::App& parent);
 Command add_config_command(CLI::App& parent);
+Command add_export_command(CLI::App& parent);
+Command add_query_command(CLI::App& parent);
+//! `ctab bench lookup`, registered on the bench subcommand.
+Command add_bench_lookup_subcommand(CLI::App& bench);
 
 }  // namespace ctab::cli

@@ -299,6 +299,7 @@ TEST(Table, FlangeForcePushesTheRailToTheFieldSide) {
 mode = "wheel"
 [axes]
 lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
+vertical_load_N = 78.5e3
 )", "flange.toml"), GeneratorInfo{});
   const std::size_t k = table.patch_index(2, 0, 0, 1);
   ASSERT_EQ(table.patch.present[k], 1);
@@ -324,6 +325,7 @@ TEST(Table, MorePatchesThanSlotsIsASlotOverflowNotALostForce) {
 mode = "wheel"
 [axes]
 lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
+vertical_load_N = 78.5e3
 [output]
 patch_slots = 1
 )", "one_slot.toml"), GeneratorInfo{});

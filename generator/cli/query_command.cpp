@@ -1,0 +1,110 @@
+// `ctab query FILE --dy METRES [--load N | --approach M] [--wheel left|right] [--pchip] [--strips] [--json]`:
+// one lookup, as a HIL target would make it, printed as text or JSON.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/lookup/hdf5_table.hpp"
+
+namespace ctab::cli {
+
+namespace {
+
+struct QueryOptions {
+  std::string path, wheel = "right";
+  double dy_m = 0.0;
+  std::optional<double> load_N, approach_m;
+  bool json = false, pchip = false, strips = false;
+};
+
+constexpr const char* kQuantityNames[CTAB_QUANTITIES] = {
+    "normal_force_N", "force_lateral_N", "force_vertical_N", "area_m2", "max_pressure_Pa", "approach_m",
+    "contact_angle_rad", "plane_angle_rad", "s_origin_y_rail_m", "s_origin_z_rail_m", "y_wheel_m", "y_rail_m",
+    "y_cop_rail_m", "rolling_radius_m", "semi_axis_a_m", "semi_axis_b_m", "s_min_m", "s_max_m"};
+
+//! The second-axis value the options give for this table (its only value when it has one).
+double second_value(const lookup::Table& table, const QueryOptions& o) {
+  const bool approach_axis = table.second_axis_kind() == lookup::SecondAxis::Approach;
+  if (o.load_N && approach_axis) throw gen::Error(o.path + ": the second axis is approach_m; use --approach");
+  if (o.approach_m && !approach_axis) throw gen::Error(o.path + ": the second axis is a load; use --load");
+  const std::optional<double> given = approach_axis ? o.approach_m : o.load_N;
+  if (table.n_second() == 1 && given && *given != table.second_axis().front())
+    std::fprintf(stderr, "ctab query: note: the table has one %s value (%g); %g ignored\n",
+                 lookup::second_axis_name(table.second_axis_kind()), table.second_axis().front(), *given);
+  if (table.n_second() == 1 || !given) return table.second_axis().front();
+  return *given;
+}
+
+int run_query(const QueryOptions& o) {
+  lookup::Table table;
+  const lookup::LoadResult loaded = lookup::open_file(o.path, {o.pchip ? CTAB_PCHIP : CTAB_LINEAR, false}, table);
+  if (!loaded.ok()) throw gen::Error(loaded.message);
+  ctab_location where;
+  table.prelookup(o.dy_m, second_value(table, o), where);
+  ctab_result r;
+  std::memset(&r, 0, sizeof r);
+  const std::int32_t wheel = o.wheel == "left" ? CTAB_WHEEL_LEFT : CTAB_WHEEL_RIGHT;
+  table.query(where, wheel, r);
+  if (r.status < 0) throw gen::Error(std::string("query: ") + ctab_status_message(r.status));
+  nlohmann::json out = {{"status", r.status == CTAB_OK ? "ok" : "clamped"},
+                        {"dy_m", r.dy_m},
+                        {lookup::second_axis_name(table.second_axis_kind()), r.second},
+                        {"wheel", o.wheel},
+                        {"interpolation", o.pchip ? "pchip" : "linear"},
+                        {"roll_rad", r.roll_rad},
+                        {"rolling_radius_difference_m", r.rolling_radius_difference_m},
+                        {"neighbour_status", std::vector<int>(r.neighbour_status, r.neighbour_status + 4)}};
+  nlohmann::json patches = nlohmann::json::array();
+  for (std::int32_t s = 0; s < r.n_slots; ++s) {
+    if (!r.patch[s].present) continue;
+    nlohmann::json patch = {{"slot", s}};
+    for (std::size_t q = 0; q < CTAB_QUANTITIES; ++q) patch[kQuantityNames[q]] = r.patch[s].q[q];
+    if (o.strips && table.strip_samples() > 0) {
+      std::vector<double> sv(table.strip_samples()), a(sv.size()), p0(sv.size());
+      std::uint32_t count = 0;
+      (void)table.strip_profile(where, wheel, s, sv.data(), a.data(), p0.data(), table.strip_samples(), &count);
+      patch["strips"] = {{"s_m", sv}, {"half_length_m", a}, {"peak_pressure_Pa", p0}};
+    }
+    patches.push_back(patch);
+  }
+  out["patches"] = patches;
+  if (o.json) {
+    std::cout << out.dump(2) << '\n';
+    return 0;
+  }
+  std::printf("%s wheel at dy = %.4f mm, %s = %g (%s): roll %.6g rad, delta r %.6g mm\n", o.wheel.c_str(), r.dy_m * 1e3,
+              lookup::second_axis_name(table.second_axis_kind()), r.second, r.status == CTAB_OK ? "ok" : "clamped",
+              r.roll_rad, r.rolling_radius_difference_m * 1e3);
+  for (const auto& patch : patches) {
+    std::printf("slot %d:\n", patch["slot"].get<int>());
+    for (const char* name : kQuantityNames) std::printf("  %-20s %.9g\n", name, patch[name].get<double>());
+  }
+  if (patches.empty()) std::printf("no contact\n");
+  return 0;
+}
+
+}  // namespace
+
+Command add_query_command(CLI::App& parent) {
+  auto o = std::make_shared<QueryOptions>();
+  CLI::App* app = parent.add_subcommand("query", "Interpolate a table at one lateral shift (as the lookup library does)");
+  app->add_option("file", o->path, "table (.h5 or blob)")->required();
+  app->add_option("--dy", o->dy_m, "lateral displacement [m]")->required();
+  auto* load = app->add_option("--load", o->load_N, "vertical or normal load [N] (tables with a load axis)");
+  app->add_option("--approach", o->approach_m, "approach [m] (tables with an approach axis)")->excludes(load);
+  app->add_option("--wheel", o->wheel, "left or right (default right)")->check(CLI::IsMember({"left", "right"}));
+  app->add_flag("--pchip", o->pchip, "monotone cubic along dy instead of linear");
+  app->add_flag("--strips", o->strips, "include the strip profiles (JSON)");
+  app->add_flag("--json", o->json, "print JSON");
+  return {app, [o] { return run_query(*o); }};
+}
+
+}  // namespace ctab::cli

@@ -1,0 +1,38 @@
+#pragma once
+//! The ctab table blob: a versioned, checksummed, little-endian serialisation of a TableData, loadable without
+//! HDF5 or a file system (ctab_table_open_memory). Layout: lookup/README.md "Blob format".
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ctab/lookup/table_data.hpp"
+
+namespace ctab::lookup {
+
+inline constexpr char kBlobMagic[8] = {'C', 'T', 'A', 'B', 'B', 'L', 'O', 'B'};
+inline constexpr std::uint32_t kBlobVersion = 1;
+inline constexpr std::size_t kBlobHeaderBytes = 64;
+
+//! FNV-1a, 64 bit, of `size` bytes.
+[[nodiscard]] std::uint64_t fnv1a64(const void* data, std::size_t size) noexcept;
+
+//! Serialises `data` (valid per validate()); values stored as float when `single_precision`.
+[[nodiscard]] std::vector<unsigned char> write_blob(const TableData& data, bool single_precision);
+
+//! Parses and checks a blob (magic, versions, sizes, checksum; contents are checked by the load). On success
+//! `single_precision` says whether the blob stores floats.
+[[nodiscard]] LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool& single_precision);
+
+//! True if the bytes start like an HDF5 file (signature at offset 0).
+[[nodiscard]] bool looks_like_hdf5(const void* bytes, std::size_t size) noexcept;
+
+}  // namespace ctab::lookup
+
+namespace ctab::lookup {
+
+//! A C header holding `blob` as `static const unsigned char NAME[]` (8-byte aligned) and `NAME_size`, for
+//! ctab_table_open_memory(NAME, NAME_size, ...) on targets without a file system. `name` must be a C identifier.
+[[nodiscard]] std::string blob_c_header(const std::vector<unsigned char>& blob, const std::string& name);
+
+}  // namespace ctab::lookup

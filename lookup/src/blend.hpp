@@ -1,0 +1,26 @@
+#pragma once
+// The blending rules of README "Jumps", branch-free: weights of the two dy neighbours of one slot from its cell
+// rule, and of the two second-axis rows from the rows' presence.
+#include <cstdint>
+
+namespace ctab::lookup::detail {
+
+// Weight of the upper neighbour = kF[rule] * f + kStep[rule] * (f >= 0.5) + kConst[rule], per CellRule value
+// (Interpolate, Nearest, LowerOnly, UpperOnly).
+inline constexpr double kF[4] = {1.0, 0.0, 0.0, 0.0};
+inline constexpr double kStep[4] = {0.0, 1.0, 0.0, 0.0};
+inline constexpr double kConst[4] = {0.0, 0.0, 0.0, 1.0};
+
+//! Weight of the upper dy neighbour for a slot with cell rule `rule` at fraction f; `step` = (f >= 0.5).
+inline double upper_weight(std::uint8_t rule, double f, double step) noexcept {
+  return kF[rule] * f + kStep[rule] * step + kConst[rule];
+}
+
+//! Weight of the upper second-axis row: g where both rows give the patch, else the nearer row (upper if g >= 0.5).
+inline double row_weight(double present_lo, double present_hi, double g) noexcept {
+  const double both = present_lo * present_hi;
+  const double nearer_hi = g >= 0.5 ? 1.0 : 0.0;
+  return both * g + (1.0 - both) * nearer_hi;
+}
+
+}  // namespace ctab::lookup::detail

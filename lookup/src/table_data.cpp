@@ -1,0 +1,88 @@
+// TableData: sizing and validation (axes, shapes, finite values, statuses, presence, jumps).
+#include <cmath>
+#include <string>
+
+#include "ctab/lookup/table_data.hpp"
+
+namespace ctab::lookup {
+
+namespace {
+
+constexpr int kCaseStatusMin = -6;  // tables::kCaseStatusMin
+constexpr int kCaseStatusMax = 1;   // tables::kCaseStatusMax
+constexpr double kUniformTolerance = 1e-9;  // relative to the dy span
+
+LoadResult fail(ctab_status status, const std::string& what) { return {status, what}; }
+
+bool all_finite(const std::vector<double>& values) noexcept {
+  for (const double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace
+
+const char* second_axis_name(SecondAxis axis) noexcept {
+  switch (axis) {
+    case SecondAxis::VerticalLoad: return "vertical_load_N";
+    case SecondAxis::NormalLoad: return "normal_load_N";
+    case SecondAxis::Approach: return "approach_m";
+  }
+  return "unknown";
+}
+
+void TableData::allocate() {
+  const std::size_t cases = n_dy() * n_second();
+  const std::size_t patches = cases * kWheels * n_slots;
+  roll_rad.assign(cases, 0.0);
+  rolling_radius_difference_m.assign(cases, 0.0);
+  case_status.assign(cases * kWheels, 0);
+  present.assign(patches, 0);
+  quantities.assign(patches * kQuantities, 0.0);
+  strip_half_length_m.assign(patches * strip_samples, 0.0);
+  strip_peak_pressure_Pa.assign(patches * strip_samples, 0.0);
+}
+
+LoadResult validate(const TableData& data) {
+  const std::size_t n_dy = data.n_dy();
+  const std::size_t n_2 = data.n_second();
+  if (n_dy < 2 || n_2 < 1) return fail(CTAB_ERR_AXES, "the dy axis needs at least 2 values and the second axis 1");
+  if (!all_finite(data.dy_m) || !all_finite(data.second)) return fail(CTAB_ERR_AXES, "an axis value is not finite");
+  const double step = (data.dy_m.back() - data.dy_m.front()) / static_cast<double>(n_dy - 1);
+  if (!(step > 0.0)) return fail(CTAB_ERR_AXES, "the dy axis is not increasing");
+  const double span = data.dy_m.back() - data.dy_m.front();
+  for (std::size_t i = 0; i < n_dy; ++i)
+    if (std::fabs(data.dy_m[i] - (data.dy_m.front() + step * static_cast<double>(i))) > kUniformTolerance * span)
+      return fail(CTAB_ERR_AXES, "the dy axis is not uniform at index " + std::to_string(i));
+  for (std::size_t i = 1; i < n_2; ++i)
+    if (!(data.second[i] > data.second[i - 1]))
+      return fail(CTAB_ERR_AXES, "the second axis is not strictly increasing at index " + std::to_string(i));
+  if (static_cast<std::uint32_t>(data.second_axis) > 2) return fail(CTAB_ERR_AXES, "unknown second-axis quantity");
+  if (data.n_slots < 1 || data.n_slots > kMaxSlots) return fail(CTAB_ERR_SHAPE, "slots must be 1..16");
+  if (data.strip_samples == 1 || data.strip_samples > kMaxStripSamples)
+    return fail(CTAB_ERR_SHAPE, "strip samples must be 0 or 2..4096");
+
+  const std::size_t cases = n_dy * n_2;
+  const std::size_t patches = cases * kWheels * data.n_slots;
+  const auto sized = [](const auto& v, std::size_t n) { return v.size() == n; };
+  if (!sized(data.roll_rad, cases) || !sized(data.rolling_radius_difference_m, cases) ||
+      !sized(data.case_status, cases * kWheels) || !sized(data.present, patches) ||
+      !sized(data.quantities, patches * kQuantities) || !sized(data.strip_half_length_m, patches * data.strip_samples) ||
+      !sized(data.strip_peak_pressure_Pa, patches * data.strip_samples))
+    return fail(CTAB_ERR_SHAPE, "an array's size does not match the axes, slots and strip samples");
+
+  if (!all_finite(data.roll_rad) || !all_finite(data.rolling_radius_difference_m) || !all_finite(data.quantities) ||
+      !all_finite(data.strip_half_length_m) || !all_finite(data.strip_peak_pressure_Pa))
+    return fail(CTAB_ERR_CONTENT, "a tabulated value is not finite");
+  for (const std::int8_t s : data.case_status)
+    if (s < kCaseStatusMin || s > kCaseStatusMax) return fail(CTAB_ERR_CONTENT, "unknown case status " + std::to_string(s));
+  for (const std::uint8_t p : data.present)
+    if (p > 1) return fail(CTAB_ERR_CONTENT, "a presence flag is neither 0 nor 1");
+  for (const Jump& j : data.jumps)
+    if (j.i_second >= n_2 || j.i_dy + 1 >= n_dy || j.wheel >= kWheels || j.slot >= data.n_slots ||
+        static_cast<int>(j.kind) < 1 || static_cast<int>(j.kind) > 3)
+      return fail(CTAB_ERR_CONTENT, "a jump lies outside the table");
+  return {};
+}
+
+}  // namespace ctab::lookup

@@ -1,0 +1,166 @@
+// Table::load: copies a validated TableData into one aligned record per case (lookup/include/ctab/lookup/table.hpp)
+// and precomputes, per dy cell and slot, the blending rule (README "Jumps"), and with PCHIP the Fritsch-Carlson
+// slopes at every node.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "ctab/lookup/table.hpp"
+
+namespace ctab::lookup {
+
+namespace {
+
+constexpr std::size_t kAlignBytes = 64;  // a cache line
+
+bool succeeded(std::int8_t case_status) noexcept { return case_status >= 0; }  // converged or no contact
+
+//! Fritsch-Carlson slope at a node from the secants of its interpolable neighbouring cells (uniform spacing:
+//! the harmonic mean, 0 at an extremum; one-sided: that cell's secant, which keeps the cubic monotone).
+double node_slope(bool has_left, double left, bool has_right, double right) noexcept {
+  if (has_left && has_right) return left * right <= 0.0 ? 0.0 : 2.0 / (1.0 / left + 1.0 / right);
+  if (has_left) return left;
+  if (has_right) return right;
+  return 0.0;
+}
+
+CellRule cell_rule(std::int8_t status_lo, std::int8_t status_hi, bool present_lo, bool present_hi, bool jump) noexcept {
+  const bool ok_lo = succeeded(status_lo), ok_hi = succeeded(status_hi);
+  if (ok_lo && ok_hi) return present_lo && present_hi && !jump ? CellRule::Interpolate : CellRule::Nearest;
+  if (ok_lo) return CellRule::LowerOnly;
+  if (ok_hi) return CellRule::UpperOnly;
+  return CellRule::Nearest;
+}
+
+//! Copies `from` into `to` converted to T, starting at a 64-byte boundary.
+template <typename T, typename Aligned>
+void store_aligned(const std::vector<double>& from, Aligned& to) {
+  if (from.empty()) return;
+  constexpr std::size_t pad = kAlignBytes / sizeof(T);
+  to.storage.assign(from.size() + pad, T{});
+  const auto address = reinterpret_cast<std::uintptr_t>(to.storage.data());
+  to.skip = (kAlignBytes - address % kAlignBytes) % kAlignBytes / sizeof(T);
+  std::transform(from.begin(), from.end(), to.storage.begin() + static_cast<std::ptrdiff_t>(to.skip),
+                 [](double v) { return static_cast<T>(v); });
+}
+
+template <typename T>
+void store(const std::vector<double>& from, std::vector<T>& to) {
+  to.resize(from.size());
+  std::transform(from.begin(), from.end(), to.begin(), [](double v) { return static_cast<T>(v); });
+}
+
+}  // namespace
+
+LoadResult Table::load(const TableData& data, const LoadOptions& options) {
+  *this = Table{};
+  LoadResult result = validate(data);
+  if (!result.ok()) return result;
+
+  const std::size_t n_dy = data.n_dy(), n_2 = data.n_second(), n_slots = data.n_slots;
+  const std::size_t cases = n_dy * n_2 * kWheels;
+  const double ddy = (data.dy_m.back() - data.dy_m.front()) / static_cast<double>(n_dy - 1);
+  // Record layout, padded to whole cache lines of the storage type.
+  const std::size_t per_line = kAlignBytes / (options.single_precision ? sizeof(float) : sizeof(double));
+  off_present_ = n_slots * kQuantities;
+  off_rule_ = off_present_ + n_slots;
+  off_status_ = off_rule_ + n_slots;
+  off_roll_ = off_status_ + 1;
+  stride_ = (off_roll_ + 2 + per_line - 1) / per_line * per_line;
+
+  std::vector<std::uint8_t> jump(data.present.size(), 0);  // by the patch index of the cell's lower end
+  for (const Jump& j : data.jumps) jump[data.patch_index(j.i_dy, j.i_second, j.wheel, j.slot)] = 1;
+  std::vector<double> records(cases * stride_, 0.0);
+  for (std::size_t i = 0; i < n_dy; ++i)
+    for (std::size_t i2 = 0; i2 < n_2; ++i2)
+      for (std::size_t w = 0; w < kWheels; ++w) {
+        const std::size_t c = data.case_index(i, i2, w);
+        double* record = records.data() + c * stride_;
+        for (std::size_t s = 0; s < n_slots; ++s) {
+          const std::size_t p = data.patch_index(i, i2, w, s);
+          if (data.present[p])  // absent patches stay zero
+            std::copy_n(data.quantities.begin() + static_cast<std::ptrdiff_t>(p * kQuantities), kQuantities,
+                        record + s * kQuantities);
+          record[off_present_ + s] = data.present[p] ? 1.0 : 0.0;
+          CellRule rule = CellRule::Nearest;  // the last dy value starts no cell
+          if (i + 1 < n_dy)
+            rule = cell_rule(data.case_status[c], data.case_status[data.case_index(i + 1, i2, w)], data.present[p] != 0,
+                             data.present[data.patch_index(i + 1, i2, w, s)] != 0, jump[p] != 0);
+          record[off_rule_ + s] = static_cast<double>(rule);
+        }
+        record[off_status_] = data.case_status[c];
+        record[off_roll_] = data.roll_rad[i * n_2 + i2];
+        record[off_roll_ + 1] = data.rolling_radius_difference_m[i * n_2 + i2];
+      }
+
+  std::vector<double> slopes;
+  if (options.interpolation == CTAB_PCHIP) {
+    const std::size_t row = n_2 * kWheels;  // cases per dy value
+    slopes.assign(records.size(), 0.0);
+    const auto interpolable = [&](std::size_t c, std::size_t s) {
+      return records[c * stride_ + off_rule_ + s] == static_cast<double>(CellRule::Interpolate);
+    };
+    const auto slope = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
+      const double v = records[c * stride_ + k];
+      const double left = has_left ? (v - records[(c - row) * stride_ + k]) / ddy : 0.0;
+      const double right = has_right ? (records[(c + row) * stride_ + k] - v) / ddy : 0.0;
+      return node_slope(has_left, left, has_right, right);
+    };
+    for (std::size_t i = 0; i < n_dy; ++i)
+      for (std::size_t k = 0; k < row; ++k) {
+        const std::size_t c = i * row + k;
+        for (std::size_t s = 0; s < n_slots; ++s) {
+          const bool has_left = i >= 1 && interpolable(c - row, s), has_right = i + 1 < n_dy && interpolable(c, s);
+          for (std::size_t q = 0; q < kQuantities; ++q)
+            slopes[c * stride_ + s * kQuantities + q] = slope(c, s * kQuantities + q, has_left, has_right);
+        }
+        for (std::size_t k2 = off_roll_; k2 < off_roll_ + 2; ++k2)  // roll and delta r: always interpolable
+          slopes[c * stride_ + k2] = slope(c, k2, i >= 1, i + 1 < n_dy);
+      }
+  }
+
+  if (options.single_precision) {
+    store_aligned<float>(records, records_f_);
+    store_aligned<float>(slopes, slopes_f_);
+    store(data.strip_half_length_m, strip_a_f_);
+    store(data.strip_peak_pressure_Pa, strip_p0_f_);
+  } else {
+    store_aligned<double>(records, records_d_);
+    store_aligned<double>(slopes, slopes_d_);
+    strip_a_d_ = data.strip_half_length_m;
+    strip_p0_d_ = data.strip_peak_pressure_Pa;
+  }
+  second_ = data.second;
+  second_kind_ = data.second_axis;
+  interpolation_ = options.interpolation;
+  n_slots_ = static_cast<std::uint32_t>(n_slots);
+  strip_samples_ = static_cast<std::uint32_t>(data.strip_samples);
+  dy0_ = data.dy_m.front();
+  ddy_ = ddy;
+  inv_ddy_ = 1.0 / ddy;
+  n_dy_ = static_cast<std::uint32_t>(n_dy);
+  return result;
+}
+
+template <>
+const double* Table::records<double>() const noexcept { return records_d_.data(); }
+template <>
+const float* Table::records<float>() const noexcept { return records_f_.data(); }
+template <>
+const double* Table::slope_records<double>() const noexcept { return slopes_d_.data(); }
+template <>
+const float* Table::slope_records<float>() const noexcept { return slopes_f_.data(); }
+
+double Table::field(std::size_t c, std::size_t offset) const noexcept {
+  return single_precision() ? static_cast<double>(records<float>()[c * stride_ + offset])
+                            : records<double>()[c * stride_ + offset];
+}
+
+std::size_t Table::memory_bytes() const noexcept {
+  return sizeof(*this) +
+         (records_d_.storage.size() + slopes_d_.storage.size() + second_.size() + strip_a_d_.size() + strip_p0_d_.size()) *
+             sizeof(double) +
+         (records_f_.storage.size() + slopes_f_.storage.size() + strip_a_f_.size() + strip_p0_f_.size()) * sizeof(float);
+}
+
+}  // namespace ctab::lookup

@@ -1,0 +1,148 @@
+// Interpolation and the jump rules of lookup/README.md on synthetic tables (linear data: interpolation is exact).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "ctab/lookup/table.hpp"
+#include "synthetic_table.hpp"
+
+namespace ctab::lookup {
+namespace {
+
+using test::make_synthetic;
+using test::synthetic_value;
+
+constexpr std::size_t kYRail = CTAB_Y_RAIL_M;
+
+Table load(const TableData& data, ctab_interpolation interpolation = CTAB_LINEAR) {
+  Table table;
+  const LoadResult result = table.load(data, {interpolation, false});
+  EXPECT_TRUE(result.ok()) << result.message;
+  return table;
+}
+
+ctab_result query(const Table& table, double dy, double second, int wheel) {
+  ctab_location where;
+  table.prelookup(dy, second, where);
+  ctab_result result;
+  std::memset(&result, 0, sizeof result);
+  table.query(where, wheel, result);
+  return result;
+}
+
+double quantity(const ctab_patch& patch, std::size_t q) {
+  return patch.q[q];
+}
+
+TEST(LookupQuery, LinearDataIsReproducedOffGridInBothModes) {
+  for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
+    const Table table = load(make_synthetic(), mode);
+    for (const double dy : {-11.73e-3, -0.31e-3, 2.5e-3, 5.99e-3}) {
+      const ctab_result r = query(table, dy, 0.0, 1);
+      ASSERT_EQ(r.status, CTAB_OK);
+      EXPECT_EQ(r.n_slots, 3);
+      EXPECT_EQ(r.patch[0].present, 1);
+      EXPECT_EQ(r.patch[1].present, 0) << "no flange below 6 mm";
+      for (std::size_t q = 0; q < kQuantities; ++q)
+        EXPECT_NEAR(quantity(r.patch[0], q), synthetic_value(q, 0, 1, dy, 60e3), 1e-9) << "q " << q << " mode " << mode;
+      EXPECT_NEAR(r.roll_rad, 1e-3 * dy + 1e-9 * 60e3, 1e-15);
+      EXPECT_NEAR(r.rolling_radius_difference_m, 0.1 * dy, 1e-15);
+      for (std::size_t q = 0; q < kQuantities; ++q) EXPECT_EQ(quantity(r.patch[1], q), 0.0);
+    }
+  }
+}
+
+TEST(LookupQuery, AppearingPatchTakesTheNearerNeighbourInsideTheJumpCell) {
+  const TableData data = make_synthetic();  // flange appears between 6 and 7 mm
+  for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
+    const Table table = load(data, mode);
+    EXPECT_EQ(table.rule(18, 0, 0, 1), CellRule::Nearest);
+    EXPECT_EQ(table.rule(18, 0, 0, 0), CellRule::Interpolate);
+    const ctab_result below = query(table, 6.49e-3, 0.0, 0);
+    EXPECT_EQ(below.patch[1].present, 0);
+    EXPECT_EQ(below.patch[1].q[CTAB_NORMAL_FORCE_N], 0.0);
+    const ctab_result above = query(table, 6.5e-3, 0.0, 0);
+    EXPECT_EQ(above.patch[1].present, 1);
+    for (std::size_t q = 0; q < kQuantities; ++q)  // exactly the upper neighbour (7 mm), not a blend
+      EXPECT_EQ(quantity(above.patch[1], q), data.quantities[data.patch_index(19, 0, 0, 1) * kQuantities + q]);
+    // The tread slot interpolates through the same cell.
+    EXPECT_NEAR(above.patch[0].q[CTAB_NORMAL_FORCE_N], synthetic_value(0, 0, 0, 6.5e-3, 60e3), 1e-9);
+  }
+}
+
+TEST(LookupQuery, MovingPatchIsNotBlendedAcrossItsJump) {
+  const TableData data = make_synthetic();  // spare slot's y_rail jumps 5 mm between -5 and -4 mm
+  const Table table = load(data);
+  const std::size_t lo = data.patch_index(7, 0, 1, 2), hi = data.patch_index(8, 0, 1, 2);
+  const ctab_result near_lo = query(table, -4.6e-3, 0.0, 1), near_hi = query(table, -4.4e-3, 0.0, 1);
+  EXPECT_EQ(near_lo.patch[2].present, 1);
+  EXPECT_EQ(quantity(near_lo.patch[2], kYRail), data.quantities[lo * kQuantities + kYRail]);
+  EXPECT_EQ(quantity(near_hi.patch[2], kYRail), data.quantities[hi * kQuantities + kYRail]);
+}
+
+TEST(LookupQuery, FailedNeighbourIsNeverUsed) {
+  const TableData data = make_synthetic({.failed_case = true});  // right wheel fails at -8 mm
+  const Table table = load(data);
+  EXPECT_EQ(table.rule(3, 0, 0, 0), CellRule::LowerOnly);   // cell (-9, -8)
+  EXPECT_EQ(table.rule(4, 0, 0, 0), CellRule::UpperOnly);   // cell (-8, -7)
+  for (const double dy : {-8.3e-3, -7.9e-3}) {
+    const ctab_result r = query(table, dy, 0.0, 0);
+    EXPECT_EQ(r.patch[0].present, 1) << dy;
+    EXPECT_LT(r.worst_case_status, 0);
+    const double expected = dy < -8e-3 ? synthetic_value(0, 0, 0, -9e-3, 60e3) : synthetic_value(0, 0, 0, -7e-3, 60e3);
+    EXPECT_NEAR(r.patch[0].q[CTAB_NORMAL_FORCE_N], expected, 1e-9) << dy;
+  }
+  EXPECT_EQ(query(table, -8.3e-3, 0.0, 1).worst_case_status, 0) << "the left wheel did not fail";
+}
+
+TEST(LookupQuery, SecondAxisBlendsRowsOnlyWhereBothHaveThePatch) {
+  const TableData data = make_synthetic({.n_second = 3, .second_row_flange_later = true});
+  const Table table = load(data);
+  // Linear in both axes where the patch exists in all four neighbours.
+  const ctab_result r = query(table, 1.23e-3, 71e3, 0);
+  ASSERT_EQ(r.status, CTAB_OK);
+  EXPECT_NEAR(r.patch[0].q[CTAB_AREA_M2], synthetic_value(3, 0, 0, 1.23e-3, 71e3), 1e-9);
+  EXPECT_NEAR(r.second, 71e3, 0.0);
+  // At dy = 7.2 mm the flange exists in row 0 (from 6.5 mm) but not in row 1 (from 7.5 mm): the nearer row wins.
+  const ctab_result near0 = query(table, 7.2e-3, 69e3, 0), near1 = query(table, 7.2e-3, 71e3, 0);
+  EXPECT_EQ(near0.patch[1].present, 1);
+  EXPECT_NEAR(near0.patch[1].q[CTAB_NORMAL_FORCE_N], synthetic_value(0, 1, 0, 7.2e-3, 60e3), 1e-9);
+  EXPECT_EQ(near1.patch[1].present, 0);
+  EXPECT_EQ(near1.patch[1].q[CTAB_NORMAL_FORCE_N], 0.0);
+}
+
+TEST(LookupQuery, PchipDoesNotOvershootAStep) {
+  TableData data = make_synthetic({.dy_min_m = 0.0, .dy_max_m = 10e-3});
+  const std::size_t q = CTAB_AREA_M2;
+  for (std::size_t i = 0; i < data.n_dy(); ++i)
+    data.quantities[data.patch_index(i, 0, 0, 0) * kQuantities + q] = i < 5 ? 1.0 : 2.0;
+  const Table table = load(data, CTAB_PCHIP);
+  for (double dy = 0.0; dy <= 10e-3; dy += 0.05e-3) {
+    const double v = query(table, dy, 0.0, 0).patch[0].q[CTAB_AREA_M2];
+    EXPECT_GE(v, 1.0);
+    EXPECT_LE(v, 2.0);
+  }
+  EXPECT_DOUBLE_EQ(query(table, 2.5e-3, 0.0, 0).patch[0].q[CTAB_AREA_M2], 1.0) << "flat data stays flat";
+}
+
+TEST(LookupQuery, StripProfileFollowsTheSlotRules) {
+  const TableData data = make_synthetic();
+  const Table table = load(data);
+  ctab_location where;
+  table.prelookup(2.5e-3, 0.0, where);
+  double s[8], a[8], p0[8];
+  std::uint32_t count = 0;
+  EXPECT_EQ(table.strip_profile(where, 0, 0, s, a, p0, 8, &count), CTAB_OK);
+  ASSERT_EQ(count, 5u);
+  EXPECT_NEAR(s[0], synthetic_value(16, 0, 0, 2.5e-3, 60e3), 1e-9);
+  EXPECT_NEAR(s[4], synthetic_value(17, 0, 0, 2.5e-3, 60e3), 1e-9);
+  EXPECT_NEAR(a[2], 3e-3 * (1.0 + 2.5e-3), 1e-15);
+  EXPECT_EQ(table.strip_profile(where, 0, 1, s, a, p0, 8, &count), CTAB_OK);
+  EXPECT_EQ(count, 0u) << "no flange at 2.5 mm";
+  EXPECT_EQ(table.strip_profile(where, 0, 0, s, a, p0, 4, &count), CTAB_INVALID_INPUT) << "capacity too small";
+  EXPECT_EQ(table.strip_profile(where, 0, 3, s, a, p0, 8, &count), CTAB_INVALID_INPUT) << "no slot 3";
+}
+
+}  // namespace
+}  // namespace ctab::lookup

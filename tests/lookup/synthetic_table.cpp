@@ -1,0 +1,63 @@
+// Synthetic tables for the lookup tests (see synthetic_table.hpp).
+#include "synthetic_table.hpp"
+
+#include <cmath>
+
+namespace ctab::lookup::test {
+
+double synthetic_value(std::size_t q, std::size_t s, std::size_t w, double dy_m, double second) {
+  const double k = static_cast<double>(q + 1) + 10.0 * static_cast<double>(s) + 100.0 * static_cast<double>(w);
+  return k * (1.0 + 50.0 * dy_m) + 1e-5 * k * second;
+}
+
+TableData make_synthetic(const SyntheticOptions& o) {
+  TableData data;
+  const auto n_dy = static_cast<std::size_t>(std::lround((o.dy_max_m - o.dy_min_m) / o.dy_step_m)) + 1;
+  for (std::size_t i = 0; i < n_dy; ++i) data.dy_m.push_back(o.dy_min_m + o.dy_step_m * static_cast<double>(i));
+  for (std::size_t j = 0; j < o.n_second; ++j) data.second.push_back(60e3 + 20e3 * static_cast<double>(j));
+  data.second_axis = SecondAxis::VerticalLoad;
+  data.n_slots = 3;
+  data.strip_samples = o.strip_samples;
+  data.allocate();
+  for (std::size_t i = 0; i < n_dy; ++i)
+    for (std::size_t j = 0; j < o.n_second; ++j) {
+      const double dy = data.dy_m[i], second = data.second[j];
+      data.roll_rad[i * o.n_second + j] = 1e-3 * dy + 1e-9 * second;
+      data.rolling_radius_difference_m[i * o.n_second + j] = 0.1 * dy;
+      for (std::size_t w = 0; w < kWheels; ++w) {
+        const double flange_from = o.flange_from_m + (o.second_row_flange_later && j >= 1 ? 1e-3 : 0.0);
+        const bool present[3] = {true, dy >= flange_from, true};
+        for (std::size_t s = 0; s < 3; ++s) {
+          const std::size_t p = data.patch_index(i, j, w, s);
+          data.present[p] = present[s] ? 1 : 0;
+          if (!present[s]) continue;
+          for (std::size_t q = 0; q < kQuantities; ++q) data.quantities[p * kQuantities + q] = synthetic_value(q, s, w, dy, second);
+          if (s == 2 && dy >= o.moves_at_m) data.quantities[p * kQuantities + 11] += 5e-3;  // y_rail_m moves
+          for (std::size_t k = 0; k < o.strip_samples; ++k) {
+            data.strip_half_length_m[p * o.strip_samples + k] = 1e-3 * (1.0 + static_cast<double>(k)) * (1.0 + dy);
+            data.strip_peak_pressure_Pa[p * o.strip_samples + k] = 1e9 * (1.0 + static_cast<double>(k) + 10.0 * dy);
+          }
+        }
+        // Jumps: the flange appears, the spare slot moves (in the cells containing those points).
+        const double next = dy + o.dy_step_m;
+        if (i + 1 < n_dy && dy < flange_from && next >= flange_from)
+          data.jumps.push_back({static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(w), 1,
+                                JumpKind::Appears});
+        if (i + 1 < n_dy && dy < o.moves_at_m && next >= o.moves_at_m)
+          data.jumps.push_back({static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(w), 2,
+                                JumpKind::Moves});
+      }
+    }
+  if (o.failed_case) {
+    const auto i = static_cast<std::size_t>(std::lround((-8e-3 - o.dy_min_m) / o.dy_step_m));
+    data.case_status[data.case_index(i, 0, 0)] = -1;
+    for (std::size_t s = 0; s < 3; ++s) {
+      const std::size_t p = data.patch_index(i, 0, 0, s);
+      data.present[p] = 0;
+      for (std::size_t q = 0; q < kQuantities; ++q) data.quantities[p * kQuantities + q] = 0.0;
+    }
+  }
+  return data;
+}
+
+}  // namespace ctab::lookup::test
