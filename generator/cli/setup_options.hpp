@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "ctab/sweep/table_config.hpp"
+#include "ctab/sweep/table_generator.hpp"
 
 namespace ctab::cli {
 
-//! Strip widths outside this range are input errors: below 10 um a wheel-rail patch needs thousands of strips
-//! (1 um ran for minutes and took 10 GB); above 2 mm a patch (5-20 mm wide) gets too few strips to resolve it.
-inline constexpr double kMinStripWidth_m = 10e-6;
-inline constexpr double kMaxStripWidth_m = 2e-3;
+//! Strip widths outside [gen::kMinStripWidth_m, gen::kMaxStripWidth_m] are input errors (the sweep's range).
+using gen::kMaxStripWidth_m;
+using gen::kMinStripWidth_m;
 //! An explicit --threads above this is an input error; a larger OMP_NUM_THREADS is clamped to it (thousands of
 //! threads exhaust memory and crashed the OpenMP runtime; no machine this targets has more cores).
 inline constexpr int kMaxThreads = 1024;
