@@ -1,10 +1,10 @@
 // `ctab solve --config FILE --dy D [--load V]` reproduces a table entry: same set-up, roll, load kind and statuses
 // as the generator (compared with gen::generate_table in process).
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -49,7 +49,8 @@ TEST(CliSolveConfig, ReproducesTableEntries) {
     EXPECT_EQ(json["right"]["normal_load_N"].get<double>(), total_force(table, i_dy, 1, 0)) << "dy " << dy.str();
     EXPECT_NEAR(json["left"]["normal_load_N"].get<double>(), total_force(table, i_dy, 1, 1), 1.0) << "dy " << dy.str();
     for (std::size_t wheel = 0; wheel < 2; ++wheel)
-      EXPECT_EQ(table.status[table.wheel_index(i_dy, 1, wheel)], ctab::tables::CaseStatus::Converged) << "converged in the table";
+      EXPECT_EQ(table.status[table.wheel_index(i_dy, 1, wheel)], ctab::tables::CaseStatus::Converged)
+          << "converged in the table";
   }
   // A config with a load axis needs --load; a single-value config does not.
   const ctab::test::CtabRun missing = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0"});
