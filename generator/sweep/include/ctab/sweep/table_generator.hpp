@@ -4,8 +4,8 @@
 //!
 //! Set-up (serial, may throw InputError): make_sweep_setup loads the profiles, places them on the track and
 //! builds the process-wide kernel and Hertz tables. One table case (one lateral shift and one load value) is
-//! solved by solve_table_case, which `ctab solve --config FILE --dy X` uses as well; generate_table runs the same
-//! steps (solve_case_roll, solve_case_wheel) over the whole grid.
+//! solved by solve_table_case, which `ctab solve` uses for every wheel-rail case (--config FILE --dy X, or the
+//! set-up options); generate_table runs the same steps (solve_case_roll, solve_case_wheel) over the whole grid.
 //!
 //! The parallel region has one task per case with a dynamic schedule (the cost varies tenfold between tread and
 //! flange cases) and one WheelContactWorkspace per thread (indexed by omp_get_thread_num(); results do not
