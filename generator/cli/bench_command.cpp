@@ -1,102 +1,134 @@
-// `ctab bench solver`: MIM-1D on the Hertz case with prescribed load at three strip widths (paper Table 1).
+// `ctab bench solver|wheelrail|generate [--json]`: ctab's own speed figures (strips, iterations, mean, min,
+// median, worst per row). Comparisons with CONTACT and the paper live in scripts/speed_vs_contact.py, which reads
+// the --json output: no reference times of other programs in the binary.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <iostream>
 #include <vector>
 
+#include "bench_stats.hpp"
 #include "commands.hpp"
-#include "setup_options.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/mim1d.hpp"
 #include "ctab/fixtures/paper_cases.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
-#include <filesystem>
+#include "exit_codes.hpp"
+#include "setup_options.hpp"
+#include "version.hpp"
 
 namespace ctab::cli {
 
 namespace {
 
-struct Row {
-  double width_m;
-  double paper_matlab_s;  // Qazi et al. 2022, Table 1
-  double contact_s;       // CONTACT whole process, this machine kind (reference/contact/hertz_sphere.csv)
-};
+constexpr double kHertzForce_N = 963.0e3;     // paper section 3.1, sphere R = 40 mm on a flat
+constexpr double kWheelRailForce_N = 78.5e3;  // paper section 3.2, total normal force per wheel
+const std::vector<double> kHertzStripWidths_m = {0.2e-3, 0.08e-3, 0.04e-3};     // paper Table 1
+const std::vector<double> kWheelRailShifts_m = {-1e-3, 0.0, 1e-3, 2e-3, 5e-3};  // paper Figure 8
 
-int run_bench_solver(double seconds_per_case) {
-  const double E_star = gen::effective_modulus(gen::kSteel, gen::kSteel);
-  const double force = 963.0e3;
-  const std::vector<Row> rows = {{0.2e-3, 2.0e-3, 0.033}, {0.08e-3, 2.9e-2, 0.205}, {0.04e-3, 9.2e-2, 0.99}};
-  std::printf("MIM-1D, sphere R = 40 mm on a flat, N = 963 kN prescribed (single thread)\n");
-  std::printf("%8s %7s %6s %11s %11s %11s %13s %11s %9s\n", "strip mm", "strips", "iters", "mean ms", "min ms",
-              "worst ms", "paper Matlab", "CONTACT", "speed-up");
-  const gen::GapProfile gap = gen::paper::hertz_sphere_gap();
-  for (const Row& row : rows) {
-    gen::Mim1dOptions options;
-    options.strip_width_m = row.width_m;
-    gen::Mim1dSolver solver(gap, E_star, options);
-    gen::NormalSolution solution = solver.solve_for_load(force);  // warm-up
-    std::vector<double> times;
-    double total = 0.0;
-    while (total < seconds_per_case || times.size() < 5) {
-      const auto start = std::chrono::steady_clock::now();
-      solution = solver.solve_for_load(force);
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      times.push_back(t);
-      total += t;
-    }
-    const double mean = total / static_cast<double>(times.size());
-    std::printf("%8.2f %7zu %6d %11.3f %11.3f %11.3f %11.1f ms %8.0f ms %8.0fx\n", row.width_m * 1e3,
-                solution.patches.empty() ? 0 : solution.patches.front().strips.size(), solution.iterations, mean * 1e3,
-                *std::min_element(times.begin(), times.end()) * 1e3, *std::max_element(times.begin(), times.end()) * 1e3,
-                row.paper_matlab_s * 1e3, row.contact_s * 1e3, row.contact_s / mean);
+// The JSON document of a benchmark: what was run, where, and its rows (filled by the caller).
+nlohmann::json bench_document(const char* benchmark, const char* description, double seconds_per_row) {
+  return {{"benchmark", benchmark},
+          {"description", description},
+          {"ctab_version", CTAB_VERSION},
+          {"git_commit", CTAB_GIT_COMMIT},
+          {"threads", 1},
+          {"seconds_per_row", seconds_per_row},
+          {"units", "SI: m, N, s"},
+          {"rows", nlohmann::json::array()}};
+}
+
+void print_timing(const Timing& t) {
+  std::printf(" %8zu %10.3f %10.3f %10.3f %10.3f\n", t.samples, t.mean_s * 1e3, t.min_s * 1e3, t.median_s * 1e3,
+              t.worst_s * 1e3);
+}
+
+constexpr const char* kTimingHeader = " %8s %10s %10s %10s %10s\n";
+
+// MIM-1D on the sphere with the load prescribed, at the paper's three strip widths.
+int run_bench_solver(double seconds_per_row, bool json) {
+  const char* description = "MIM-1D, sphere R = 40 mm on a flat, N = 963 kN prescribed (single thread)";
+  nlohmann::json document = bench_document("solver", description, seconds_per_row);
+  document["normal_load_N"] = kHertzForce_N;
+  if (!json) {
+    std::printf("%s\n%8s %7s %6s", description, "strip mm", "strips", "iters");
+    std::printf(kTimingHeader, "samples", "mean ms", "min ms", "median ms", "worst ms");
   }
-  return 0;
+  const double E_star = gen::effective_modulus(gen::kSteel, gen::kSteel);
+  const gen::GapProfile gap = gen::paper::hertz_sphere_gap();
+  for (const double width_m : kHertzStripWidths_m) {
+    gen::Mim1dOptions options;
+    options.strip_width_m = width_m;
+    gen::Mim1dSolver solver(gap, E_star, options);
+    gen::NormalSolution solution = solver.solve_for_load(kHertzForce_N);  // warm-up
+    const Timing timing = time_repeatedly(seconds_per_row, [&] { solution = solver.solve_for_load(kHertzForce_N); });
+    const std::size_t strips = solution.patches.empty() ? 0 : solution.patches.front().strips.size();
+    nlohmann::json row = {{"strip_width_m", width_m}, {"strips", strips}, {"iterations", solution.iterations}};
+    add_timing(row, timing);
+    document["rows"].push_back(row);
+    if (!json) {
+      std::printf("%8.2f %7zu %6d", width_m * 1e3, strips, solution.iterations);
+      print_timing(timing);
+    }
+  }
+  if (json) std::cout << document.dump(1) << '\n';
+  return kExitSuccess;
 }
 
 // Geometry (rigid contact search, strip problem) plus MIM-1D per wheel-rail case: S1002 on UIC60 1:40, right wheel,
-// single-wheel mode, N = 78.5 kN, strips 0.2 mm, at the shifts of the CONTACT reference cases.
-int run_bench_wheelrail(double seconds_per_case) {
+// single-wheel mode, N = 78.5 kN, strips 0.2 mm, at the shifts of the paper's wheel-rail cases.
+int run_bench_wheelrail(double seconds_per_row, bool json) {
+  const char* description =
+      "Wheel-rail case: S1002 on UIC60 1:40, single wheel, N = 78.5 kN, strips 0.2 mm (single thread)";
+  nlohmann::json document = bench_document("wheelrail", description, seconds_per_row);
+  document["normal_load_N"] = kWheelRailForce_N;
+  if (!json) {
+    std::printf("%s\n%8s %8s %7s", description, "dy mm", "patches", "iters");
+    std::printf(kTimingHeader, "samples", "mean ms", "min ms", "median ms", "worst ms");
+  }
   const double E_star = gen::effective_modulus(gen::kSteel, gen::kSteel);
   const gen::ProfileTable wheel = gen::load_profile("S1002", gen::ProfileRole::Wheel, {});
   const gen::ProfileTable rail = gen::load_profile("UIC60", gen::ProfileRole::Rail, {});
   const gen::SideGeometry side(wheel, rail, gen::TrackSetup{});
-  struct WheelRailRow {
-    double dy_m, contact_s;  // CONTACT whole-process CPU time per case, this machine kind (summary.csv cpu_s_case)
-  };
-  const std::vector<WheelRailRow> rows = {{-1e-3, 0.146}, {0.0, 0.195}, {1e-3, 0.207}, {2e-3, 0.138}, {5e-3, 0.135}};
-  std::printf("Wheel-rail case: S1002 on UIC60 1:40, single wheel, N = 78.5 kN, strips 0.2 mm (single thread)\n");
-  std::printf("%8s %8s %7s %11s %11s %11s %10s %9s\n", "dy mm", "patches", "iters", "mean ms", "min ms", "worst ms", "CONTACT",
-              "speed-up");
-  for (const WheelRailRow& row : rows) {
-    gen::WheelContact contact =
-        gen::solve_wheel_contact(side, row.dy_m, 0.0, E_star, gen::LoadKind::NormalForce, 78.5e3, gen::WheelRailOptions{});
-    std::vector<double> times;
-    double total = 0.0;
-    while (total < seconds_per_case || times.size() < 5) {
-      const auto start = std::chrono::steady_clock::now();
-      contact = gen::solve_wheel_contact(side, row.dy_m, 0.0, E_star, gen::LoadKind::NormalForce, 78.5e3, gen::WheelRailOptions{});
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      times.push_back(t);
-      total += t;
+  for (const double dy_m : kWheelRailShifts_m) {
+    auto solve = [&] {
+      return gen::solve_wheel_contact(side, dy_m, 0.0, E_star, gen::LoadKind::NormalForce, kWheelRailForce_N,
+                                      gen::WheelRailOptions{});
+    };
+    gen::WheelContact contact = solve();  // warm-up
+    const Timing timing = time_repeatedly(seconds_per_row, [&] { contact = solve(); });
+    nlohmann::json row = {{"dy_m", dy_m}, {"patches", contact.patches.size()}, {"iterations", contact.iterations}};
+    add_timing(row, timing);
+    document["rows"].push_back(row);
+    if (!json) {
+      std::printf("%8.1f %8zu %7d", dy_m * 1e3, contact.patches.size(), contact.iterations);
+      print_timing(timing);
     }
-    const double mean = total / static_cast<double>(times.size());
-    std::printf("%8.1f %8zu %7d %11.3f %11.3f %11.3f %7.0f ms %8.0fx\n", row.dy_m * 1e3, contact.patches.size(), contact.iterations,
-                mean * 1e3, *std::min_element(times.begin(), times.end()) * 1e3,
-                *std::max_element(times.begin(), times.end()) * 1e3, row.contact_s * 1e3, row.contact_s / mean);
   }
-  return 0;
+  if (json) std::cout << document.dump(1) << '\n';
+  return kExitSuccess;
 }
 
 // The default table (241 shifts x 2 wheels) at 1 and 2 threads: best of several runs of the generator, the
 // parallel efficiency t1 / (2 t2), and the size of the written file.
-int run_bench_generate(int repetitions) {
+int run_bench_generate(int repetitions, bool json) {
   const gen::TableConfig config = gen::parse_table_config(gen::kDefaultTableConfig, "default config");
   (void)gen::generate_table(config, gen::GeneratorInfo{});  // warm-up: process-wide tables
-  std::printf("Default table: %zu lateral shifts x 2 wheels, wheelset mode, MIM-1D 0.2 mm (best of %d runs)\n",
-              config.lateral_displacement_m.size(), repetitions);
-  double best[3] = {0, 1e9, 1e9};
+  if (!json)
+    std::printf("Default table: %zu lateral shifts x 2 wheels, wheelset mode, MIM-1D 0.2 mm (best of %d runs)\n",
+                config.lateral_displacement_m.size(), repetitions);
+  nlohmann::json document = {{"benchmark", "generate"},
+                             {"description", "default table, wheelset mode, MIM-1D 0.2 mm"},
+                             {"ctab_version", CTAB_VERSION},
+                             {"git_commit", CTAB_GIT_COMMIT},
+                             {"lateral_shifts", config.lateral_displacement_m.size()},
+                             {"repetitions", repetitions},
+                             {"units", "SI: s, bytes"},
+                             {"rows", nlohmann::json::array()}};
+  double best_s[3] = {0, 1e9, 1e9};
   tables::Table table;
   for (int threads = 1; threads <= 2; ++threads) {
     gen::GeneratorInfo info;
@@ -104,18 +136,30 @@ int run_bench_generate(int repetitions) {
     for (int r = 0; r < repetitions; ++r) {
       const auto start = std::chrono::steady_clock::now();
       table = gen::generate_table(config, info);
-      best[threads] = std::min(best[threads], std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      best_s[threads] =
+          std::min(best_s[threads], std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
-    std::printf("  %d thread(s): %.3f s\n", threads, best[threads]);
+    document["rows"].push_back({{"threads", threads}, {"best_s", best_s[threads]}});
+    if (!json) std::printf("  %d thread(s): %.3f s\n", threads, best_s[threads]);
   }
   const std::string path = (std::filesystem::temp_directory_path() / "ctab_bench_table.h5").string();
   const auto start = std::chrono::steady_clock::now();
-  if (!tables::write_table(table, path).ok()) return 4;
-  const double write = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("  parallel efficiency 1 -> 2 threads: %.0f %%\n", 100.0 * best[1] / (2.0 * best[2]));
-  std::printf("  HDF5 write %.3f s, file size %.1f kB\n", write, static_cast<double>(std::filesystem::file_size(path)) / 1024.0);
+  const tables::TableResult written = tables::write_table(table, path);
+  if (!written.ok()) throw IoError(written.message);  // names the file
+  const double write_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto file_bytes = std::filesystem::file_size(path);
   std::filesystem::remove(path);
-  return 0;
+  const double efficiency = best_s[1] / (2.0 * best_s[2]);
+  document["parallel_efficiency"] = efficiency;
+  document["write_s"] = write_s;
+  document["file_bytes"] = file_bytes;
+  if (json) {
+    std::cout << document.dump(1) << '\n';
+  } else {
+    std::printf("  parallel efficiency 1 -> 2 threads: %.0f %%\n", 100.0 * efficiency);
+    std::printf("  HDF5 write %.3f s, file size %.1f kB\n", write_s, static_cast<double>(file_bytes) / 1024.0);
+  }
+  return kExitSuccess;
 }
 
 }  // namespace
@@ -129,21 +173,26 @@ Command add_bench_command(CLI::App& parent) {
   solver->add_option("--seconds", *seconds, "measuring time per width [s]")
       ->capture_default_str()
       ->check(seconds_check);
-  CLI::App* wheelrail = app->add_subcommand("wheelrail", "Geometry plus MIM-1D per wheel-rail case (the CONTACT cases)");
+  CLI::App* wheelrail =
+      app->add_subcommand("wheelrail", "Geometry plus MIM-1D per wheel-rail case (the paper's cases)");
   wheelrail->add_option("--seconds", *seconds, "measuring time per case [s]")
       ->capture_default_str()
       ->check(seconds_check);
   auto repetitions = std::make_shared<int>(5);
-  CLI::App* generate = app->add_subcommand("generate", "The default table at 1 and 2 threads: time, parallel efficiency, file size");
+  CLI::App* generate =
+      app->add_subcommand("generate", "The default table at 1 and 2 threads: time, parallel efficiency, file size");
   generate->add_option("--repetitions", *repetitions, "runs per thread count")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
+  auto json = std::make_shared<bool>(false);
+  for (CLI::App* bench : {solver, wheelrail, generate})
+    bench->add_flag("--json", *json, "print one JSON object (SI units; read by scripts/speed_vs_contact.py)");
   const Command lookup = add_bench_lookup_subcommand(*app);
-  return {app, [seconds, solver, wheelrail, repetitions, lookup] {
+  return {app, [seconds, solver, wheelrail, repetitions, json, lookup] {
             if (lookup.app->parsed()) return lookup.run();
-            if (solver->parsed()) return run_bench_solver(*seconds);
-            if (wheelrail->parsed()) return run_bench_wheelrail(*seconds);
-            return run_bench_generate(*repetitions);
+            if (solver->parsed()) return run_bench_solver(*seconds, *json);
+            if (wheelrail->parsed()) return run_bench_wheelrail(*seconds, *json);
+            return run_bench_generate(*repetitions, *json);
           }};
 }
 

@@ -37,8 +37,8 @@ std::size_t row_count(const GeometryOptions& o) {
 int run_geometry(GeometryOptions o) {
   const std::size_t count = row_count(o);
   finish_setup_options(o.setup);
-  const CaseSetup setup(o.setup);
-  const gen::SideGeometry& side = setup.side();
+  const gen::SweepSetup setup = make_case_setup(o.setup);
+  const gen::SideGeometry& side = *setup.side;
   std::vector<gen::RigidContactRow> rows;
   for (std::size_t i = 0; i < count; ++i)
     rows.push_back(gen::rigid_contact(side, side, o.dy_min_m + o.dy_step_m * static_cast<double>(i), o.setup.mode));

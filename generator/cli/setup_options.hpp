@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "ctab/sweep/table_config.hpp"
+#include "ctab/sweep/table_generator.hpp"
 
 namespace ctab::cli {
 
-//! The strip-width range of configs (table_config.hpp) holds for the command line too.
+//! Strip widths outside [gen::kMinStripWidth_m, gen::kMaxStripWidth_m] are input errors (the sweep's range).
 using gen::kMaxStripWidth_m;
 using gen::kMinStripWidth_m;
 //! An explicit --threads above this is an input error; a larger OMP_NUM_THREADS is clamped to it (thousands of

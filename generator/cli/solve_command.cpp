@@ -6,7 +6,6 @@
 #include <memory>
 #include <optional>
 #include <sstream>
-#include <tuple>
 #include <string>
 
 #include "commands.hpp"
@@ -111,23 +110,23 @@ gen::TableConfig wheelrail_config(const SolveOptions& o, double& load_value) {
 int solve_wheelrail(const SolveOptions& o) {
   if (!o.dy_m) throw gen::InputError("--dy", 0, "wheel-rail cases need the lateral shift --dy METRES");
   double load_value = 0.0;
-  CaseSetup setup(wheelrail_config(o, load_value));
-  if (o.config_path.empty()) apply_mim1d_extras(o, setup.options().mim1d);
-  const bool right = o.side != "left", left = o.side != "right";
-  bool roll_converged = true;
-  const double roll = case_roll(setup, *o.dy_m, roll_converged);
-  for (const auto& [wanted, wheel, name] :
-       {std::tuple{right, Wheel::Right, "right"}, std::tuple{left, Wheel::Left, "left"}})
-    if (wanted && roll_converged && !wheel_over_rail(setup, wheel, *o.dy_m, roll))
+  const gen::TableConfig config = wheelrail_config(o, load_value);
+  gen::SweepSetup setup = make_case_setup(config);
+  if (o.config_path.empty()) apply_mim1d_extras(o, setup.options.mim1d);
+  const gen::WheelSelection wheels{o.side != "left", o.side != "right"};
+  const gen::CaseSolution solution = gen::solve_table_case(setup, *o.dy_m, load_value, wheels);
+  // A shift that puts a wheel beside its rail is a typing error, not a case outcome (level when the roll failed).
+  const double roll_rad = solution.roll.converged ? solution.roll.roll_rad : 0.0;
+  for (std::size_t wheel = 0; wheel < wheels.size(); ++wheel)
+    if (wheels[wheel] && !wheel_over_rail(setup, wheel, *o.dy_m, roll_rad))
       throw gen::InputError("--dy", 0,
-                            std::string("the ") + name + " wheel is off its rail at dy = " + millimetres(*o.dy_m) +
-                                " (no wheel point above the rail profile)");
-  const TableCase result = solve_table_case(setup, *o.dy_m, load_value, right, left);
+                            std::string("the ") + (wheel == 0 ? "right" : "left") + " wheel is off its rail at dy = " +
+                                millimetres(*o.dy_m) + " (no wheel point above the rail profile)");
   if (o.json)
-    std::cout << to_json(setup.config(), result, load_value).dump(1) << '\n';
+    std::cout << to_json(config, solution).dump(1) << '\n';
   else
-    print_summary(setup.config(), result, load_value);
-  return report_failures(setup, result, load_value) ? kExitCaseFailed : kExitSuccess;
+    print_summary(config, solution);
+  return report_failures(config, setup, solution) ? kExitCaseFailed : kExitSuccess;
 }
 
 int run_solve(const SolveOptions& o) {

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "ctab/io/solution_json.hpp"
+#include "table_case.hpp"
 
 namespace ctab::cli {
 
@@ -12,13 +13,17 @@ namespace {
 
 const char* mode_name(gen::ContactMode mode) { return mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"; }
 const char* method_name(gen::NormalMethod method) { return method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"; }
-const char* wheel_name(int w) { return w == 0 ? "right" : "left"; }
+const char* wheel_name(std::size_t w) { return w == 0 ? "right" : "left"; }
 
-void print_wheel(const char* name, const gen::WheelContact& c) {
+// The table's name of a wheel's outcome ("converged", ..., "solver-exception").
+const char* status_text(const gen::CaseWheel& wheel) { return tables::case_status_name(gen::case_status(wheel)); }
+
+void print_wheel(const char* name, const gen::CaseWheel& wheel) {
+  const gen::WheelContact& c = wheel.contact;
   std::printf(
       "%s wheel: %s, vertical approach %.5f mm, normal load %.3f kN, vertical load %.3f kN, %d iterations, "
       "%.3f ms\n",
-      name, gen::status_name(c.status), c.vertical_approach_m * 1e3, c.normal_force_N * 1e-3, c.vertical_force_N * 1e-3,
+      name, status_text(wheel), c.vertical_approach_m * 1e3, c.normal_force_N * 1e-3, c.vertical_force_N * 1e-3,
       c.iterations, c.solve_time_s * 1e3);
   for (const auto& p : c.patches)
     std::printf(
@@ -48,39 +53,44 @@ void print_summary(const gen::NormalSolution& s) {
   }
 }
 
-void print_summary(const gen::TableConfig& config, const TableCase& result, double load_value) {
+void print_summary(const gen::TableConfig& config, const gen::CaseSolution& solution) {
   std::printf("%s on %s (%s), %s mode, %s, strips %.3f mm: dy %.3f mm, roll %.4f mrad%s, %s %g\n", config.wheel.c_str(),
               config.rail.c_str(), config.inclination_text.c_str(), mode_name(config.mode), method_name(config.method),
-              config.strip_width_m * 1e3, result.dy_m * 1e3, result.roll_rad * 1e3,
-              result.roll_converged ? "" : " (roll iteration failed)", gen::load_axis_name(config.load_kind),
-              load_value);
-  for (int w = 0; w < 2; ++w)
-    if (result.solved[w]) print_wheel(wheel_name(w), result.wheel[w]);
+              config.strip_width_m * 1e3, solution.dy_m * 1e3, solution.roll.roll_rad * 1e3,
+              solution.roll.converged ? "" : " (roll iteration failed)", gen::load_axis_name(config.load_kind),
+              solution.load_value);
+  for (std::size_t w = 0; w < solution.wheels.size(); ++w)
+    if (solution.solved[w]) print_wheel(wheel_name(w), solution.wheels[w]);
 }
 
-nlohmann::json to_json(const gen::TableConfig& config, const TableCase& result, double load_value) {
+nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& solution) {
   nlohmann::json json = {{"mode", mode_name(config.mode)},
                          {"method", method_name(config.method)},
-                         {"dy_m", result.dy_m},
-                         {"roll_rad", result.roll_rad},
-                         {"roll_converged", result.roll_converged},
+                         {"dy_m", solution.dy_m},
+                         {"roll_rad", solution.roll.roll_rad},
+                         {"roll_converged", solution.roll.converged},
                          {"load_kind", gen::load_axis_name(config.load_kind)},
-                         {"load_value", load_value},
+                         {"load_value", solution.load_value},
                          {"config_source", config.source}};
-  for (int w = 0; w < 2; ++w)
-    if (result.solved[w]) json[wheel_name(w)] = gen::to_json(result.wheel[w]);
+  for (std::size_t w = 0; w < solution.wheels.size(); ++w) {
+    if (!solution.solved[w]) continue;
+    nlohmann::json& wheel = json[wheel_name(w)] = gen::to_json(solution.wheels[w].contact);
+    wheel["dy_m"] = solution.dy_m;  // the wheelset's shift and roll, not the left side's mirrored frame
+    wheel["roll_rad"] = solution.roll.roll_rad;
+    wheel["status"] = status_text(solution.wheels[w]);
+  }
   return json;
 }
 
-bool report_failures(const CaseSetup& setup, const TableCase& result, double load_value) {
+bool report_failures(const gen::TableConfig& config, const gen::SweepSetup& setup, const gen::CaseSolution& solution) {
   bool failed = false;
-  for (int w = 0; w < 2; ++w) {
-    if (!result.solved[w] || gen::is_success(result.wheel[w].status)) continue;
+  for (std::size_t w = 0; w < solution.wheels.size(); ++w) {
+    if (!solution.solved[w] || tables::is_success(gen::case_status(solution.wheels[w]))) continue;
     failed = true;
-    const std::string hint = failure_hint(setup, w == 0 ? Wheel::Right : Wheel::Left, result);
-    std::fprintf(stderr, "ctab solve: %s wheel at dy = %g m, %s = %g (%s): %s%s%s\n", wheel_name(w), result.dy_m,
-                 gen::load_axis_name(setup.config().load_kind), load_value, setup.config().source.c_str(),
-                 gen::status_name(result.wheel[w].status), hint.empty() ? "" : "; ", hint.c_str());
+    const std::string hint = failure_hint(setup, w, solution);
+    std::fprintf(stderr, "ctab solve: %s wheel at dy = %g m, %s = %g (%s): %s%s%s\n", wheel_name(w), solution.dy_m,
+                 gen::load_axis_name(config.load_kind), solution.load_value, config.source.c_str(),
+                 status_text(solution.wheels[w]), hint.empty() ? "" : "; ", hint.c_str());
   }
   return failed;
 }

@@ -5,17 +5,18 @@
 
 #include "ctab/contact/normal_solution.hpp"
 #include "ctab/sweep/table_config.hpp"
-#include "table_case.hpp"
+#include "ctab/sweep/table_generator.hpp"
 
 namespace ctab::cli {
 
 void print_summary(const gen::NormalSolution& solution);
 //! A header line (set-up, dy, roll, load), then each solved wheel with its patches and near misses.
-void print_summary(const gen::TableConfig& config, const TableCase& result, double load_value);
-//! {"mode", "method", "dy_m", "roll_rad", "load_kind", "load_value", "config_source", "right": {...},
-//!  "left": {...}} with each wheel as gen::to_json(WheelContact); only solved wheels appear.
-[[nodiscard]] nlohmann::json to_json(const gen::TableConfig& config, const TableCase& result, double load_value);
+void print_summary(const gen::TableConfig& config, const gen::CaseSolution& solution);
+//! {"mode", "method", "dy_m", "roll_rad", "roll_converged", "load_kind", "load_value", "config_source",
+//!  "right": {...}, "left": {...}} with each wheel as gen::to_json(WheelContact) with the wheelset's dy and roll
+//! (track frame) and the table's status name; only solved wheels appear.
+[[nodiscard]] nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& solution);
 //! One line on stderr per solved wheel whose status is not a success, with the geometry's hint; true if any.
-bool report_failures(const CaseSetup& setup, const TableCase& result, double load_value);
+bool report_failures(const gen::TableConfig& config, const gen::SweepSetup& setup, const gen::CaseSolution& solution);
 
 }  // namespace ctab::cli

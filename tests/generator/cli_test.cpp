@@ -216,8 +216,9 @@ TEST(CliInput, EveryBadInputSaysWhatWentWrong) {
       {wheelrail + "--strip-width 1e-6", 2, "--strip-width: expected a number in [1e-05, 0.005] m, got 1e-6"},
       {"solve --dy 1 --normal-load 78.5e3", 2, "wheel is off its rail at dy = 1000 mm"},
       {"solve --dy -0.08 --normal-load 78.5e3 --mode wheelset", 4,
-       "right wheel at dy = -0.08 m, normal_load_N = 78500 (command line): invalid-input; first contact at the end of "
-       "the wheel profile"},
+       "right wheel at dy = -0.08 m, normal_load_N = 78500 (command line): max-iterations; the wheelset roll iteration "
+       "did not converge"},
+      {"solve --dy -0.08 --normal-load 78.5e3 --mode wheelset", 4, "; first contact at the end of the wheel profile"},
       {"geometry --dy-step 1e-21", 2, "--dy-step: gives more than 10^6 shifts"},
       {"geometry --dy-step nan", 2, "--dy-step: expected a finite number > 0"},
       {"geometry --dy-min 1e-3 --dy-max -1e-3", 2, "--dy-max: must not be below --dy-min"},

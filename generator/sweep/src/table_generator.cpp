@@ -10,6 +10,7 @@
 #include <ctime>
 #include <mutex>
 #include <numbers>
+#include <sstream>
 #include <thread>
 
 #include "ctab/contact/error.hpp"
@@ -41,6 +42,10 @@ tables::CaseStatus case_status(SolveStatus status) noexcept {
   return CaseStatus::NumericalFailure;
 }
 
+tables::CaseStatus case_status(const CaseWheel& solved) noexcept {
+  return solved.exception ? CaseStatus::SolverException : case_status(solved.contact.status);
+}
+
 void equivalent_ellipse(double area_m2, double length_m, double width_m, double& a_m, double& b_m) noexcept {
   if (!(area_m2 > 0.0 && length_m > 0.0 && width_m > 0.0)) {
     a_m = b_m = 0.0;
@@ -51,6 +56,11 @@ void equivalent_ellipse(double area_m2, double length_m, double width_m, double&
   b_m = radius / ratio;
 }
 
+SweepSetupError::SweepSetupError(const TableConfig& config, std::string key, std::string reason)
+    : InputError(config.source, config.key_line(key), "'" + key + "': " + reason),
+      key_(std::move(key)),
+      reason_(std::move(reason)) {}
+
 namespace {
 
 ProfileTable load_checked(const TableConfig& config, const std::string& spec, ProfileRole role, const char* key) {
@@ -60,8 +70,16 @@ ProfileTable load_checked(const TableConfig& config, const std::string& spec, Pr
   try {
     return load_profile(spec, role, read);
   } catch (const InputError& e) {
-    throw InputError(config.source, config.key_line(key), std::string("'") + key + "': " + e.what());
+    throw SweepSetupError(config, key, e.what());
   }
+}
+
+void check_strip_width(const TableConfig& config) {
+  if (config.strip_width_m >= kMinStripWidth_m && config.strip_width_m <= kMaxStripWidth_m) return;
+  std::ostringstream range;
+  range << "expected a strip width in [" << kMinStripWidth_m << ", " << kMaxStripWidth_m << "] m, got "
+        << config.strip_width_m;
+  throw SweepSetupError(config, "solver.strip_width_m", range.str());
 }
 
 }  // namespace
@@ -69,6 +87,7 @@ ProfileTable load_checked(const TableConfig& config, const std::string& spec, Pr
 // ---- set-up ----
 
 SweepSetup make_sweep_setup(const TableConfig& config) {
+  check_strip_width(config);
   SweepSetup setup;
   setup.wheel = std::make_unique<const ProfileTable>(load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel"));
   setup.rail = std::make_unique<const ProfileTable>(load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail"));
@@ -115,16 +134,18 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
   return out;
 }
 
-CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value) {
+CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value, WheelSelection wheels) {
   CaseSolution solution;
   solution.dy_m = dy_m;
   solution.load_value = load_value;
   solution.roll = solve_case_roll(setup, dy_m);
+  solution.solved = wheels;
   WheelContactWorkspace workspace;
   for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel)
-    solution.wheels[wheel] = solve_case_wheel(setup, wheel, dy_m, solution.roll, load_value, workspace);
-  solution.rolling_radius_difference_m = solution.wheels[0].contact.rigid_contact.rolling_radius_m -
-                                         solution.wheels[1].contact.rigid_contact.rolling_radius_m;
+    if (wheels[wheel]) solution.wheels[wheel] = solve_case_wheel(setup, wheel, dy_m, solution.roll, load_value, workspace);
+  if (wheels == kBothWheels)
+    solution.rolling_radius_difference_m = solution.wheels[0].contact.rigid_contact.rolling_radius_m -
+                                           solution.wheels[1].contact.rigid_contact.rolling_radius_m;
   return solution;
 }
 
@@ -228,7 +249,7 @@ void store_patch(tables::Table& table, const ProfileTable& rail, std::size_t k, 
 void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
                       std::size_t wheel, const CaseWheel& solved) {
   CaseStatus& status = table.status[table.wheel_index(i_dy, i_second, wheel)];
-  status = solved.exception ? CaseStatus::SolverException : case_status(solved.contact.status);
+  status = case_status(solved);
   if (!tables::is_success(status)) return;  // a failed case holds no patches
   std::vector<std::size_t> slot_of;
   if (!assign_slots(solved.contact.patches, table.n_slots, slot_of)) {

@@ -4,8 +4,8 @@
 //!
 //! Set-up (serial, may throw InputError): make_sweep_setup loads the profiles, places them on the track and
 //! builds the process-wide kernel and Hertz tables. One table case (one lateral shift and one load value) is
-//! solved by solve_table_case, which `ctab solve --config FILE --dy X` uses as well; generate_table runs the same
-//! steps (solve_case_roll, solve_case_wheel) over the whole grid.
+//! solved by solve_table_case, which `ctab solve` uses for every wheel-rail case (--config FILE --dy X, or the
+//! set-up options); generate_table runs the same steps (solve_case_roll, solve_case_wheel) over the whole grid.
 //!
 //! The parallel region has one task per case with a dynamic schedule (the cost varies tenfold between tread and
 //! flange cases) and one WheelContactWorkspace per thread (indexed by omp_get_thread_num(); results do not
@@ -19,6 +19,7 @@
 #include <memory>
 #include <string>
 
+#include "ctab/contact/error.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/tables/table.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
@@ -39,12 +40,27 @@ struct SweepSetup {
   std::unique_ptr<const ProfileTable> wheel, rail;  //!< the profiles actually used (both sides)
   std::unique_ptr<const SideGeometry> side;         //!< profiles on the track (one side frame; the left mirrored)
   double E_star_Pa = 0.0;                           //!< effective modulus of the two bodies [Pa]
-  WheelRailOptions options;                         //!< method and strip width
+  //! Method and strip width from the config, the other solver options at their defaults. A single-case caller
+  //! (`ctab solve --curvature/--update`) may change them before solving; generate_table never does.
+  WheelRailOptions options;
   ContactMode mode = ContactMode::Wheelset;
   LoadKind load_kind = LoadKind::VerticalForce;
 };
 
-//! Builds the set-up of a config; throws InputError naming the config key (profiles, strip width).
+//! An InputError of make_sweep_setup that also tells which config key was wrong and why, so that a caller whose
+//! config came from command-line options can name the option instead ("--wheel: ...").
+class SweepSetupError : public InputError {
+ public:
+  SweepSetupError(const TableConfig& config, std::string key, std::string reason);
+  [[nodiscard]] const std::string& key() const noexcept { return key_; }        //!< e.g. "profiles.wheel"
+  [[nodiscard]] const std::string& reason() const noexcept { return reason_; }  //!< the message without source/key
+
+ private:
+  std::string key_, reason_;
+};
+
+//! Builds the set-up of a config; throws SweepSetupError ("FILE:LINE: 'KEY': reason") for the profiles and a strip
+//! width outside [kMinStripWidth_m, kMaxStripWidth_m].
 [[nodiscard]] SweepSetup make_sweep_setup(const TableConfig& config);
 
 //! Rigid wheelset roll at a lateral shift: 0 in single-wheel mode. Never throws (an exception of the root finder
@@ -66,20 +82,28 @@ struct CaseWheel {
 [[nodiscard]] CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
                                          double load_value, WheelContactWorkspace& workspace) noexcept;
 
-//! Exactly one table case: the roll, both wheels and the rolling radius difference, as generate_table computes
-//! them (bit-identical to the table's values for the right wheel; for a mirrored table the left wheel of the file
-//! is the right wheel at -dy).
+//! Which wheels of a case to solve: [0] right, [1] left.
+using WheelSelection = std::array<bool, tables::kWheels>;
+inline constexpr WheelSelection kBothWheels{true, true};
+
+//! Exactly one table case: the roll, the selected wheels and the rolling radius difference, as generate_table
+//! computes them (bit-identical to the table's values for the right wheel; for a mirrored table the left wheel of
+//! the file is the right wheel at -dy).
 struct CaseSolution {
   double dy_m = 0.0;
   double load_value = 0.0;                   //!< in the unit of the second axis [N or m]
   CaseRoll roll;
-  std::array<CaseWheel, tables::kWheels> wheels;   //!< 0 right, 1 left
-  double rolling_radius_difference_m = 0.0;  //!< r_right - r_left at the rigid contact points [m]
+  WheelSelection solved = kBothWheels;       //!< the wheels solved; the others are empty
+  std::array<CaseWheel, tables::kWheels> wheels;   //!< 0 right, 1 left (each in its own side frame)
+  double rolling_radius_difference_m = 0.0;  //!< r_right - r_left at the rigid contact points [m]; 0 unless both
 };
-[[nodiscard]] CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value);
+[[nodiscard]] CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value,
+                                            WheelSelection wheels = kBothWheels);
 
 //! Table status of a solver status (every shared value checked at compile time).
 [[nodiscard]] tables::CaseStatus case_status(SolveStatus status) noexcept;
+//! Table status of a solved wheel before slot assignment: SolverException, or the solver's status.
+[[nodiscard]] tables::CaseStatus case_status(const CaseWheel& solved) noexcept;
 
 //! Stores one wheel of one case in the table: status, patches in slots (tread 0, flange 1, further patches in
 //! the next free slots in order of y_rail), force components, s origin, strip profiles. More patches than slots:
