@@ -33,12 +33,12 @@ run: build
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
-# The gtest executables run once at build time (test discovery), so the sanitizer options apply to the build too.
-$(SANITIZE_DIR)/build.ninja: | deps
-	cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCTAB_BUILD_BENCH=OFF \
-	  "-DCMAKE_CXX_FLAGS=$(SANITIZE_FLAGS)"
-
-sanitize: deps $(SANITIZE_DIR)/build.ninja
+# -O1 -g1 without NDEBUG: assertions on, line tables for the reports, a third less compile time than -O2 -g.
+# No benchmarks and no header check (the Release build has them). The gtest executables run once at build time
+# (test discovery), so the sanitizer options apply to the build too.
+sanitize: deps
+	cmake -S . -B $(SANITIZE_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS=$(SANITIZE_FLAGS)" \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DCTAB_BUILD_BENCH=OFF -DCTAB_CHECK_HEADERS=OFF
 	$(SANITIZE_ENV) cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE slow
 
