@@ -16,8 +16,9 @@
 #       Link ctab_warnings as $<BUILD_INTERFACE:ctab_warnings> (ctab_target_warnings()), never plainly: a static
 #       library hands PRIVATE links on to its consumers.
 #   ctab_install_package()
-#       (nothing with CTAB_INSTALL=OFF, e.g. under add_subdirectory) writes ctabConfig.cmake, ctabConfigVersion.cmake (0.2 accepts 0.2.x only: SameMinorVersion while < 1.0)
-#       and one ctab-COMPONENT-targets.cmake per component into <prefix>/lib/cmake/ctab.
+#       writes ctabConfig.cmake, ctabConfigVersion.cmake (0.2 accepts 0.2.x only: SameMinorVersion while < 1.0)
+#       and one ctab-COMPONENT-targets.cmake per component into <prefix>/lib/cmake/ctab. With CTAB_INSTALL=OFF
+#       (default under add_subdirectory) nothing is installed.
 include_guard(GLOBAL)
 include(CMakePackageConfigHelpers)
 
