@@ -6,3 +6,9 @@ target_compile_options(ctab_warnings INTERFACE
 if(CTAB_WERROR)
   target_compile_options(ctab_warnings INTERFACE -Werror)
 endif()
+
+# ctab_target_warnings(TARGET): our warnings for TARGET's own sources only. Through BUILD_INTERFACE, so that an
+# installed static library does not ask its consumers for a ctab_warnings target.
+function(ctab_target_warnings target)
+  target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:ctab_warnings>)
+endfunction()

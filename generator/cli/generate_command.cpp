@@ -87,8 +87,8 @@ int run_generate(const GenerateOptions& o) {
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;
   info.git_commit = CTAB_GIT_COMMIT;
-  info.compiler = "unknown";     // wired to CTAB_COMPILER with the build-info header
-  info.build_flags = "unknown";
+  info.compiler = CTAB_COMPILER;
+  info.build_flags = CTAB_BUILD_FLAGS;
   info.threads = sweep_threads(o.threads);
   const InterruptCleanup cleanup(o.output);
   const auto start = std::chrono::steady_clock::now();

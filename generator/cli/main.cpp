@@ -62,7 +62,7 @@ int run(CLI::App& app, const std::vector<ctab::cli::Command>& commands, int argc
 int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"ctab - wheel-rail contact tables: MIM-1D normal contact, table generation, real-time lookup"};
-  app.set_version_flag("--version", std::string("ctab ") + CTAB_VERSION + " (" + CTAB_GIT_COMMIT + ")");
+  app.set_version_flag("--version", ctab::cli::version_text());
   app.require_subcommand(1);
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     return std::string("ctab: error: ") + e.what() + "\nRun with --help for more information.\n";

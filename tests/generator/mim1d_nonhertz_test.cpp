@@ -68,6 +68,7 @@ double reference_value(const std::string& case_name, const std::string& column) 
 }  // namespace
 
 TEST(Mim1dNonHertz, PrescribedApproachMatchesContact) {
+  CTAB_REQUIRE_SHARED();
   Mim1dSolver solver(paper::nonhertz_gap(), kEStar, {});
   const NormalSolution s = solver.solve_for_approach(1e-3);
   ASSERT_EQ(s.status, SolveStatus::Converged);
@@ -85,6 +86,7 @@ TEST(Mim1dNonHertz, PrescribedApproachMatchesContact) {
 }
 
 TEST(Mim1dNonHertz, PrescribedLoadMatchesContact) {
+  CTAB_REQUIRE_SHARED();
   Mim1dSolver solver(paper::nonhertz_gap(), kEStar, {});
   const NormalSolution s = solver.solve_for_load(2645e3);
   ASSERT_EQ(s.status, SolveStatus::Converged);
@@ -97,6 +99,7 @@ TEST(Mim1dNonHertz, PrescribedLoadMatchesContact) {
 }
 
 TEST(Mim1dNonHertz, PointwiseCurvatureShowsThePapersBottleneck) {
+  CTAB_REQUIRE_SHARED();
   // The paper's Eq. 26 with local curvature: a_i jumps at y = 0 (~17 -> ~29 mm), CONTACT stays near 21.5 mm.
   Mim1dOptions options;
   options.curvature.treatment = CurvatureTreatment::Pointwise;

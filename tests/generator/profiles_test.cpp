@@ -50,6 +50,7 @@ std::string ten_points(double step_sign = 1.0) {
 }  // namespace
 
 TEST(Profiles, BuiltinS1002MatchesTheManchesterFile) {
+  CTAB_REQUIRE_SHARED();
   const ProfilePoints points = read_profile_points(profile_file("MBench_S1002_v3.prw"), ProfileRole::Wheel, as_given());
   ASSERT_GE(points.y_m.size(), 390u);
   double worst = 0.0;
@@ -62,6 +63,7 @@ TEST(Profiles, BuiltinS1002MatchesTheManchesterFile) {
 }
 
 TEST(Profiles, Builtin60E1Inclined1To40MatchesTheManchesterFileTo005mm) {
+  CTAB_REQUIRE_SHARED();
   const ProfileTable builtin(*uic60_inclined_curve(1.0 / 40.0), kProfileTableStep_m, "UIC60");
   const auto top = builtin.highest_point();
   EXPECT_NEAR(top.first, 0.0, 2e-5);
@@ -78,6 +80,7 @@ TEST(Profiles, Builtin60E1Inclined1To40MatchesTheManchesterFileTo005mm) {
 }
 
 TEST(Profiles, ReadersAgree) {
+  CTAB_REQUIRE_SHARED();
   const ProfileTable prr = load_profile(profile_file("MBench_UIC60_v3.prr"), ProfileRole::Rail, as_given());
   const ProfileTable ban = load_profile(profile_file("MBench_UIC60_v3.ban"), ProfileRole::Rail, as_given());
   for (double y = -0.040; y < 0.028; y += 1e-3) EXPECT_NEAR(prr.at(y).z, ban.at(y).z, 1e-9) << y;

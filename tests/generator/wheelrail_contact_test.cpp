@@ -26,6 +26,7 @@ struct Case {
 class WheelRailContact : public ::testing::TestWithParam<Case> {
  protected:
   static void SetUpTestSuite() {
+    CTAB_REQUIRE_SHARED();
     ProfileReadOptions o;
     o.inclination = 0.0;
     wheel_ = new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, o));
@@ -69,6 +70,7 @@ double p0_rms(const WheelContact& c, const std::string& tag) {
 }  // namespace
 
 TEST_P(WheelRailContact, MatchesContact) {
+  CTAB_REQUIRE_SHARED();
   const Case c = GetParam();
   const auto summary = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
   const auto dys = summary.numbers("dy_mm");

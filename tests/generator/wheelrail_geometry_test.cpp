@@ -30,6 +30,7 @@ struct Manchester {
 }  // namespace
 
 TEST(WheelRailGeometry, PlacementAndFirstTouch) {
+  CTAB_REQUIRE_SHARED();
   const Manchester m;
   EXPECT_NEAR(m.side.rail_origin_y_m(), 0.7605326, 0.02e-3);  // CONTACT: YCP(TR) - YCP(R) = 760.5326 mm
   EXPECT_NEAR(m.side.wheel_origin_y_m(), 0.750, 1e-12);
@@ -42,6 +43,7 @@ TEST(WheelRailGeometry, PlacementAndFirstTouch) {
 }
 
 TEST(WheelRailGeometry, WheelsetRollAndContactPositions) {
+  CTAB_REQUIRE_SHARED();
   const Manchester m;
   struct Row {
     double dy_mm, roll_mrad, right_y_rail_mm, right_s_mm, right_angle_deg;
@@ -59,6 +61,7 @@ TEST(WheelRailGeometry, WheelsetRollAndContactPositions) {
 }
 
 TEST(WheelRailGeometry, JumpsAndEquivalentConicity) {
+  CTAB_REQUIRE_SHARED();
   const Manchester m;
   std::vector<RigidContactRow> rows;
   for (int i = 0; i <= 100; ++i) rows.push_back(rigid_contact(m.side, m.side, i * 0.1e-3, ContactMode::Wheelset));
