@@ -238,3 +238,13 @@ TEST(Bem2dStatus, IterationCapGivesMaxIterations) {
   EXPECT_EQ(s.iterations, 3);
   EXPECT_TRUE(std::isfinite(s.normal_load_N));
 }
+
+TEST(Bem2dStatus, TinyLoadStillTouches) {
+  // 1 mN on the sphere: the Hertz radius (~2 um) is far below one element; one element carries it.
+  const NormalSolution s = solve_bem2d_for_load(paper::hertz_sphere_gap(), kEStar, grid_of(0.2e-3, 0.2e-3), 1e-3);
+  ASSERT_EQ(s.status, SolveStatus::Converged) << status_name(s.status);
+  EXPECT_NEAR(s.normal_load_N, 1e-3, 1e-12);
+  ASSERT_EQ(s.patches.size(), 1u);
+  EXPECT_GT(s.approach_m, 0.0);
+  EXPECT_TRUE(std::isfinite(s.patches[0].max_pressure_Pa));
+}

@@ -22,6 +22,8 @@ using bem2d::Prescribed;
 constexpr double kInitialCoverFactor = 2.0;
 constexpr double kRebuildCoverFactor = 1.5;
 constexpr int kMaxGridRebuilds = 8;
+// Growth of the covered approach when a tiny load leaves no element centre below it (centres lie dx/2 off x = 0).
+constexpr double kTinyLoadCoverGrowth = 4.0;
 
 bool valid_setup(const GapProfile& gap, double E_star_Pa, const Bem2dGrid& grid) {
   try {
@@ -92,8 +94,13 @@ class Bem2dRun {
     for (int rebuild = 0;; ++rebuild) {
       std::string why;
       const SolveStatus grid_status = bem2d::make_element_grid(gap_, options_.dx_m, options_.dy_m, covered, grid_, why);
+      if (load && grid_status == SolveStatus::NoContact && rebuild < kMaxGridRebuilds) {
+        // A load so small that no element centre lies below the covered approach: cover more.
+        covered = h_min + kTinyLoadCoverGrowth * (covered - h_min);
+        continue;
+      }
       if (grid_status != SolveStatus::Converged) {
-        solution_.status = grid_status;
+        solution_.status = load && grid_status == SolveStatus::NoContact ? SolveStatus::NumericalFailure : grid_status;
         return;
       }
       InfluenceConvolution influence(grid_.nx, grid_.ny, grid_.dx, grid_.dy, E_star_);

@@ -42,6 +42,8 @@ void initial_pressure(InfluenceConvolution& influence, const ElementGrid& grid, 
   pressure.assign(grid.h.size(), 0.0);
   for (std::size_t e = 0; e < pressure.size(); ++e)
     if (grid.potential[e]) pressure[e] = std::sqrt(std::max(estimated_approach - grid.h[e], 0.0));
+  if (total(pressure) == 0.0)  // the estimate lies below every element centre: start uniform on the potential area
+    for (std::size_t e = 0; e < pressure.size(); ++e) pressure[e] = grid.potential[e] ? 1.0 : 0.0;
   if (prescribed == Prescribed::Load) {
     const double sum = total(pressure) * grid.dx * grid.dy;
     if (sum > 0.0)

@@ -59,7 +59,7 @@ SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, doubl
   double half_extent = 0.0;
   for (long j = first; j <= last; ++j) {
     const GapSample s = sample_gap(gap, row_centre(j, dy));
-    if (s.h >= covered_approach) continue;
+    if (s.h + s.A * 0.25 * dx * dx >= covered_approach) continue;  // the row's nearest element centres: x = -/+ dx/2
     lo = std::min(lo, j);
     hi = std::max(hi, j);
     half_extent = std::max(half_extent, std::sqrt((covered_approach - s.h) / s.A));

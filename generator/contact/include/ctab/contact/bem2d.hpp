@@ -16,6 +16,8 @@
 //! Potential contact area: a body only closes the gap where h < delta (u > 0 wherever p > 0), so the grid covers
 //! { h(y) + A(y) x^2 < delta } plus one element; for a prescribed load delta is first estimated (Hertz at the
 //! deepest point, doubled), and the grid is rebuilt larger when the solved approach exceeds the covered one.
+//! NormalSolution fields: iterations = CG iterations, outer_iterations = grids built (prescribed load; 0 for an
+//! approach), residual = the last relative pressure change.
 //! Status: InvalidInput for a bad gap, E*, element size, load or approach, or a grid over
 //! kBem2dMaxElementsPerSide; ZoneTruncated when loaded elements reach the ends of the gap data in y;
 //! MaxIterations at the iteration cap; NumericalFailure on a non-finite iterate. Never throws, never NaN.
