@@ -1,0 +1,28 @@
+#pragma once
+//! Options of the 2-D boundary-element reference solver (bem2d.hpp), free of Eigen so that configurations and
+//! the method interface can hold them.
+#include <cstddef>
+
+namespace ctab::gen {
+
+//! Most elements along either side of the bem2d grid. Memory: the FFT work arrays hold about
+//! 2 x (2n)^2 complex numbers, 64 MB at n = 1024; a 512 x 512 grid solves in seconds.
+inline constexpr std::size_t kBem2dMaxElementsPerSide = 1024;
+//! Cap on constrained-CG iterations per solve. Chosen: the measured cases (Hertz sphere, the non-Hertzian body)
+//! need 20-200 iterations up to 512 x 512 elements; 5000 leaves a wide margin and bounds a hopeless case.
+inline constexpr int kBem2dMaxIterations = 5000;
+
+//! Element grid and solver settings of bem2d. Elements are dx x dy rectangles with edges at integer multiples of
+//! dx and dy from the origin of the gap's coordinates (CONTACT's convention, so rows line up with its grid).
+struct Bem2dGrid {
+  double dx_m = 0.2e-3;  //!< element length along the rolling direction x [m]
+  double dy_m = 0.2e-3;  //!< element width along the lateral direction y [m] (one "strip" per element row)
+  //! Relative convergence tolerance of the constrained CG [-] (Polonsky-Keer's criterion): the pressure change of
+  //! one iteration, sum |dp| over sum p, with no element entering or leaving the contact set. Chosen so that
+  //! area and peak pressure no longer change in the sixth digit on the Hertz sphere (1e-7: 77 iterations,
+  //! 1e-8: 88, 1e-10: 119 at 0.1 mm; peak pressure changes by 1e-6 between 1e-7 and 1e-10).
+  double tolerance = 1.0e-8;
+  int max_iterations = kBem2dMaxIterations;  //!< constrained-CG iteration cap [-], at most kBem2dMaxIterations
+};
+
+}  // namespace ctab::gen
