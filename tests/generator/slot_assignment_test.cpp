@@ -22,13 +22,12 @@ using ctab::tables::Table;
 namespace {
 
 SlotCase success(std::vector<SlotPatch> patches) { return {true, std::move(patches)}; }
-constexpr double kStep = 0.5e-3;  // threshold max(1 mm, 10 steps) = 5 mm
 
 }  // namespace
 
 TEST(SlotAssignment, FirstCaseIsTheZoneRule) {
   // Solver order: tread, flange, then two more tread patches: those go to 2, 3 in order of y_rail.
-  const auto a = assign_slots_along_dy({success({{-5e-3, false}, {-34e-3, true}, {4e-3, false}, {-20e-3, false}})}, 4, kStep);
+  const auto a = assign_slots_along_dy({success({{-5e-3, false}, {-34e-3, true}, {4e-3, false}, {-20e-3, false}})}, 4);
   EXPECT_EQ(a[0].slot_of, (std::vector<std::size_t>{0, 1, 3, 2}));
   EXPECT_FALSE(a[0].overflow);
 }
@@ -37,7 +36,7 @@ TEST(SlotAssignment, TwoContactsKeepTheirSlotsWhenTheSolverOrderSwaps) {
   // The hollow-wheel case: the deepest (first) patch changes from +5 mm to -25 mm between two dy.
   const auto a = assign_slots_along_dy({success({{5.3e-3, false}, {-25.8e-3, false}}),
                                         success({{-25.8e-3, false}, {5.5e-3, false}}),
-                                        success({{-25.7e-3, false}})}, 3, kStep);
+                                        success({{-25.7e-3, false}})}, 3);
   EXPECT_EQ(a[0].slot_of, (std::vector<std::size_t>{0, 2}));
   EXPECT_EQ(a[1].slot_of, (std::vector<std::size_t>{2, 0}));
   EXPECT_EQ(a[2].slot_of, (std::vector<std::size_t>{2}));  // the +5 mm contact ended: slot 0 empties
@@ -49,7 +48,7 @@ TEST(SlotAssignment, NewContactTakesItsZoneSlotAndALoneJumpKeepsItsSlot) {
                                         success({{-23e-3, false}, {-34e-3, true}}),    // flange appears
                                         success({{-42e-3, true}}),                     // tread ends, flange jumps
                                         success({})},                                  // no contact
-                                       3, kStep);
+                                       3);
   EXPECT_EQ(a[1].slot_of, (std::vector<std::size_t>{0}));
   EXPECT_EQ(a[2].slot_of, (std::vector<std::size_t>{0, 1}));
   EXPECT_EQ(a[3].slot_of, (std::vector<std::size_t>{1}));
@@ -58,11 +57,11 @@ TEST(SlotAssignment, NewContactTakesItsZoneSlotAndALoneJumpKeepsItsSlot) {
 }
 
 TEST(SlotAssignment, TreadAndFlangeFarApartAreDifferentContacts) {
-  // A lone tread patch followed by a lone flange patch 11 mm away (> 5 mm): the flange opens slot 1.
-  const auto far = assign_slots_along_dy({success({{-23e-3, false}}), success({{-34e-3, true}})}, 3, kStep);
+  // A lone tread patch followed by a lone flange patch 11 mm away (> 1 mm): the flange opens slot 1.
+  const auto far = assign_slots_along_dy({success({{-23e-3, false}}), success({{-34e-3, true}})}, 3);
   EXPECT_EQ(far[1].slot_of, (std::vector<std::size_t>{1}));
   // Within the threshold it is one contact crossing the zone boundary: it keeps its slot.
-  const auto near = assign_slots_along_dy({success({{-25.5e-3, false}}), success({{-26.5e-3, true}})}, 3, kStep);
+  const auto near = assign_slots_along_dy({success({{-25.6e-3, false}}), success({{-26.4e-3, true}})}, 3);
   EXPECT_EQ(near[1].slot_of, (std::vector<std::size_t>{0}));
 }
 
@@ -71,7 +70,7 @@ TEST(SlotAssignment, FailedAndOverflowingCasesCarryTheSlotsOver) {
                                         SlotCase{},                                                     // failed
                                         success({{-25e-3, false}, {5e-3, false}, {-10e-3, false}}),     // 3 > 2 slots
                                         success({{-24.8e-3, false}, {5.1e-3, false}})},
-                                       2, kStep);
+                                       2);
   EXPECT_EQ(a[0].slot_of, (std::vector<std::size_t>{0, 1}));  // two slots: the second tread patch takes slot 1
   EXPECT_TRUE(a[1].slot_of.empty());
   EXPECT_TRUE(a[2].overflow);
@@ -81,7 +80,7 @@ TEST(SlotAssignment, FailedAndOverflowingCasesCarryTheSlotsOver) {
 
 TEST(SlotAssignment, TiesAreDeterministic) {
   // Two previous contacts equally far from one patch: the lower slot wins.
-  const auto a = assign_slots_along_dy({success({{-1e-3, false}, {1e-3, false}}), success({{0.0, false}})}, 3, kStep);
+  const auto a = assign_slots_along_dy({success({{-1e-3, false}, {1e-3, false}}), success({{0.0, false}})}, 3);
   EXPECT_EQ(a[1].slot_of, (std::vector<std::size_t>{0}));
 }
 
@@ -164,4 +163,21 @@ TEST(SlotAssignment, HollowWornTableIsBitIdenticalAtOneAndTwoThreads) {
   EXPECT_EQ(one.patch.y_rail_m, two.patch.y_rail_m);
   EXPECT_EQ(one.patch.normal_force_N, two.patch.normal_force_N);
   EXPECT_EQ(one.jumps.size(), two.jumps.size());
+}
+
+TEST(SlotAssignment, ALoneFlangePatchFitsOneSlot) {
+  // Single wheel at dy = +7 mm: one flange patch. With one slot it takes slot 0 (the zone rule's slot 1 does not
+  // exist); only a case with more patches than slots overflows.
+  const Table table = generate_table(parse_table_config(R"(
+[solver]
+mode = "wheel"
+[axes]
+lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
+vertical_load_N = 78.5e3
+[output]
+patch_slots = 1
+)", "one_slot.toml"), GeneratorInfo{});
+  EXPECT_EQ(table.status[table.wheel_index(2, 0, 0)], CaseStatus::Converged);
+  EXPECT_EQ(table.patch.present[table.patch_index(2, 0, 0, 0)], 1);
+  EXPECT_NEAR(table.patch.force_vertical_N[table.patch_index(2, 0, 0, 0)], 78.5e3, 1e-9 * 78.5e3);
 }

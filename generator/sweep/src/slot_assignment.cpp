@@ -19,7 +19,7 @@ struct Occupant {
 
 // Continues the previous slots: greedy nearest pairs by rail position.
 void continue_slots(const std::vector<std::optional<Occupant>>& previous, const std::vector<SlotPatch>& patches,
-                    double threshold_m, std::vector<std::size_t>& slot_of, std::vector<bool>& taken) {
+                    std::vector<std::size_t>& slot_of, std::vector<bool>& taken) {
   struct Pair {
     double distance_m;
     std::size_t slot, patch;
@@ -29,7 +29,7 @@ void continue_slots(const std::vector<std::optional<Occupant>>& previous, const 
     if (!previous[slot]) continue;
     for (std::size_t i = 0; i < patches.size(); ++i) {
       const double distance = std::abs(patches[i].y_rail_m - previous[slot]->y_rail_m);
-      if (patches[i].flange != previous[slot]->flange && distance > threshold_m) continue;  // tread vs flange
+      if (patches[i].flange != previous[slot]->flange && distance > kZoneChangeMatch_m) continue;  // tread vs flange
       pairs.push_back({distance, slot, i});
     }
   }
@@ -55,11 +55,7 @@ std::size_t free_slot(bool flange, const std::vector<bool>& taken) {
 
 }  // namespace
 
-double slot_match_threshold_m(double dy_step_m) noexcept { return std::max(1e-3, 10.0 * dy_step_m); }
-
-std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& series, std::size_t n_slots,
-                                                  double dy_step_m) {
-  const double threshold_m = slot_match_threshold_m(dy_step_m);
+std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& series, std::size_t n_slots) {
   std::vector<SlotAssignment> out(series.size());
   std::vector<std::optional<Occupant>> previous(n_slots);  // the last successful case's slots
   for (std::size_t c = 0; c < series.size(); ++c) {
@@ -67,7 +63,7 @@ std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& s
     const std::vector<SlotPatch>& patches = series[c].patches;
     std::vector<std::size_t> slot_of(patches.size(), n_slots);
     std::vector<bool> taken(n_slots, false);
-    continue_slots(previous, patches, threshold_m, slot_of, taken);
+    continue_slots(previous, patches, slot_of, taken);
     bool overflow = false;
     // New contacts: the lowest-y_rail first among the extras, the zone slot to the first of its zone (solver order).
     std::vector<std::size_t> born;

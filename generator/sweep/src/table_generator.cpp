@@ -231,7 +231,7 @@ void store_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy
 
 void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
                       std::size_t wheel, const CaseWheel& solved) {
-  const std::vector<SlotAssignment> assignment = assign_slots_along_dy({slot_case(solved)}, table.n_slots, 0.0);
+  const std::vector<SlotAssignment> assignment = assign_slots_along_dy({slot_case(solved)}, table.n_slots);
   store_wheel(table, setup, i_dy, i_second, wheel, solved, assignment.front());
 }
 
@@ -331,13 +331,12 @@ tables::Table assemble(const TableConfig& config, const SweepSetup& setup, const
     return plan.mirrored ? results[(n_dy - 1 - i_dy) * n_second + i_second]
                          : results[plan.cases() + i_dy * n_second + i_second];
   };
-  const double dy_step_m = n_dy > 1 ? plan.dy_m[1] - plan.dy_m[0] : 0.0;
   for (std::size_t i_second = 0; i_second < n_second; ++i_second)
     for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel) {
       // Slots follow the contacts along dy: one serial pass per series (slot_assignment.hpp).
       std::vector<SlotCase> series(n_dy);
       for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) series[i_dy] = slot_case(solved(i_dy, i_second, wheel));
-      const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots, dy_step_m);
+      const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots);
       for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
         store_wheel(table, setup, i_dy, i_second, wheel, solved(i_dy, i_second, wheel), slots[i_dy]);
     }

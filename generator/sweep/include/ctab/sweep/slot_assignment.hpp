@@ -4,8 +4,8 @@
 //! The cases of one (second-axis value, wheel) series are taken in increasing dy, serially (after the parallel
 //! solve, so the result does not depend on the thread count). Each patch of a case continues the slot of the
 //! nearest patch of the previous successful case by rail position y_rail (greedy over all pairs, nearest pair
-//! first; ties by slot, then by patch order), except that a tread patch and a flange patch further apart than
-//! the jump threshold are different contacts. Patches left over are new contacts: in the solver's patch order,
+//! first; ties by slot, then by patch order), except that a tread patch and a flange patch more than
+//! kZoneChangeMatch_m apart are different contacts. Patches left over are new contacts: in the solver's patch order,
 //! each takes its zone's slot (tread 0, flange 1) if free, else the lowest free slot from 2, else the other zone's
 //! slot. The first case of a series (or one after a contact-free case) is thus the plain zone rule. A case whose
 //! new patches find no free slot overflows (tables::CaseStatus::SlotOverflow) and, like a failed case, leaves
@@ -37,12 +37,12 @@ struct SlotAssignment {
   bool overflow = false;  //!< more patches than free slots: the case keeps no patch
 };
 
-//! Distance in y_rail beyond which a tread and a flange patch are not the same contact: the jump threshold of
-//! tables/src/jumps.cpp, max(1 mm, 10 dy steps) [m].
-[[nodiscard]] double slot_match_threshold_m(double dy_step_m) noexcept;
+//! Largest rail-position change [m] at which a tread patch and a flange patch (or the reverse) are taken as one
+//! contact crossing the zone boundary (S = -26 mm): the 1 mm floor of the jump threshold of tables/src/jumps.cpp,
+//! independent of the dy step, so that a coarse table never hands the tread slot to a flange contact.
+inline constexpr double kZoneChangeMatch_m = 1e-3;
 
-//! Slots for a series of cases in increasing dy (see the file comment). `dy_step_m` sets the threshold.
-[[nodiscard]] std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& series, std::size_t n_slots,
-                                                                double dy_step_m);
+//! Slots for a series of cases in increasing dy (see the file comment).
+[[nodiscard]] std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& series, std::size_t n_slots);
 
 }  // namespace ctab::gen
