@@ -319,12 +319,13 @@ vertical_load_N = 78.5e3
 }
 
 TEST(Table, MorePatchesThanSlotsIsASlotOverflowNotALostForce) {
-  // One slot: every case with a flange patch overflows and keeps no patch.
+  // One slot: the two-patch case (dy = 5 mm: tread and flange) overflows and keeps no patch. (A lone flange patch
+  // fits the one slot: slot_assignment_test.)
   const Table table = generate_table(parse_table_config(R"(
 [solver]
 mode = "wheel"
 [axes]
-lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
+lateral_displacement_m = { start = -5e-3, stop = 5e-3, step = 5e-3 }
 vertical_load_N = 78.5e3
 [output]
 patch_slots = 1

@@ -18,6 +18,7 @@
 #include "ctab/contact/strip_kernel.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/io/sha256.hpp"
+#include "ctab/sweep/slot_assignment.hpp"
 
 namespace ctab::gen {
 
@@ -188,30 +189,6 @@ double s_origin_y_rail(const ContactPatch& patch, const ProfileTable& rail) {
   return std::abs(f1) <= 1e-9 ? y1 : y;
 }
 
-// Slots: the first tread patch in slot 0, the first flange patch in slot 1, the others in the next free slots
-// (from 2) in order of their rail position. Returns false when there are more patches than slots.
-bool assign_slots(const std::vector<ContactPatch>& patches, std::size_t n_slots, std::vector<std::size_t>& slot_of) {
-  slot_of.assign(patches.size(), n_slots);
-  std::vector<bool> used(std::max<std::size_t>(n_slots, 2), false);
-  std::vector<std::size_t> extra;
-  for (std::size_t i = 0; i < patches.size(); ++i) {
-    const std::size_t zone_slot = patches[i].zone == "flange" ? 1 : 0;
-    if (!used[zone_slot] && zone_slot < n_slots) {
-      used[zone_slot] = true;
-      slot_of[i] = zone_slot;
-    } else {
-      extra.push_back(i);
-    }
-  }
-  std::stable_sort(extra.begin(), extra.end(), [&](std::size_t a, std::size_t b) { return patches[a].y_rail_m < patches[b].y_rail_m; });
-  std::size_t next = 2;
-  for (const std::size_t i : extra) {
-    if (next >= n_slots) return false;
-    slot_of[i] = next++;
-  }
-  return true;
-}
-
 void store_patch(tables::Table& table, const ProfileTable& rail, std::size_t k, const ContactPatch& patch) {
   auto& p = table.patch;
   p.present[k] = 1;
@@ -246,18 +223,37 @@ void store_patch(tables::Table& table, const ProfileTable& rail, std::size_t k, 
 
 }  // namespace
 
-void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
-                      std::size_t wheel, const CaseWheel& solved) {
+namespace {
+
+SlotCase slot_case(const CaseWheel& solved) {
+  SlotCase out;
+  out.success = !solved.exception && tables::is_success(case_status(solved.contact.status));
+  if (out.success)
+    for (const ContactPatch& patch : solved.contact.patches) out.patches.push_back({patch.y_rail_m, patch.zone == "flange"});
+  return out;
+}
+
+// Status and patches of one wheel of one case in the slots `assignment` gives them.
+void store_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
+                 std::size_t wheel, const CaseWheel& solved, const SlotAssignment& assignment) {
   CaseStatus& status = table.status[table.wheel_index(i_dy, i_second, wheel)];
   status = case_status(solved);
   if (!tables::is_success(status)) return;  // a failed case holds no patches
-  std::vector<std::size_t> slot_of;
-  if (!assign_slots(solved.contact.patches, table.n_slots, slot_of)) {
+  if (assignment.overflow) {
     status = CaseStatus::SlotOverflow;
     return;
   }
-  for (std::size_t i = 0; i < slot_of.size(); ++i)
-    store_patch(table, *setup.rail, table.patch_index(i_dy, i_second, wheel, slot_of[i]), solved.contact.patches[i]);
+  for (std::size_t i = 0; i < assignment.slot_of.size(); ++i)
+    store_patch(table, *setup.rail, table.patch_index(i_dy, i_second, wheel, assignment.slot_of[i]),
+                solved.contact.patches[i]);
+}
+
+}  // namespace
+
+void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
+                      std::size_t wheel, const CaseWheel& solved) {
+  const std::vector<SlotAssignment> assignment = assign_slots_along_dy({slot_case(solved)}, table.n_slots);
+  store_wheel(table, setup, i_dy, i_second, wheel, solved, assignment.front());
 }
 
 // ---- the whole table, in named steps ----
@@ -349,18 +345,28 @@ tables::Table assemble(const TableConfig& config, const SweepSetup& setup, const
   table.n_slots = config.patch_slots;
   table.allocate();
   const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size();
+  // The solved wheel at (i_dy, i_second, wheel). Mirrored: the left wheel at dy is the right wheel at -dy (index
+  // n_dy - 1 - i_dy of a symmetric axis).
+  auto solved = [&](std::size_t i_dy, std::size_t i_second, std::size_t wheel) -> const CaseWheel& {
+    if (wheel == 0) return results[i_dy * n_second + i_second];
+    return plan.mirrored ? results[(n_dy - 1 - i_dy) * n_second + i_second]
+                         : results[plan.cases() + i_dy * n_second + i_second];
+  };
+  for (std::size_t i_second = 0; i_second < n_second; ++i_second)
+    for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel) {
+      // Slots follow the contacts along dy: one serial pass per series (slot_assignment.hpp).
+      std::vector<SlotCase> series(n_dy);
+      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) series[i_dy] = slot_case(solved(i_dy, i_second, wheel));
+      const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots);
+      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
+        store_wheel(table, setup, i_dy, i_second, wheel, solved(i_dy, i_second, wheel), slots[i_dy]);
+    }
   for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
     for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
-      const CaseWheel& right = results[i_dy * n_second + i_second];
-      // Mirrored: the left wheel at dy is the right wheel at -dy (index n_dy - 1 - i_dy of a symmetric axis).
-      const CaseWheel& left = plan.mirrored ? results[(n_dy - 1 - i_dy) * n_second + i_second]
-                                            : results[plan.cases() + i_dy * n_second + i_second];
-      store_case_wheel(table, setup, i_dy, i_second, 0, right);
-      store_case_wheel(table, setup, i_dy, i_second, 1, left);
       const std::size_t c = i_dy * n_second + i_second;
       table.roll_rad[c] = rolls[i_dy].roll_rad;
-      table.rolling_radius_difference_m[c] =
-          right.contact.rigid_contact.rolling_radius_m - left.contact.rigid_contact.rolling_radius_m;
+      table.rolling_radius_difference_m[c] = solved(i_dy, i_second, 0).contact.rigid_contact.rolling_radius_m -
+                                             solved(i_dy, i_second, 1).contact.rigid_contact.rolling_radius_m;
     }
   return table;
 }

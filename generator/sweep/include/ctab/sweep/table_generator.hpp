@@ -105,9 +105,11 @@ struct CaseSolution {
 //! Table status of a solved wheel before slot assignment: SolverException, or the solver's status.
 [[nodiscard]] tables::CaseStatus case_status(const CaseWheel& solved) noexcept;
 
-//! Stores one wheel of one case in the table: status, patches in slots (tread 0, flange 1, further patches in
-//! the next free slots in order of y_rail), force components, s origin, strip profiles. More patches than slots:
-//! the case gets SlotOverflow and keeps no patch (force is never dropped silently).
+//! Stores one wheel of one case in the table: status, patches in slots, force components, s origin, strip
+//! profiles. A lone case has no neighbour to follow, so its slots are the zone rule of slot_assignment.hpp (tread
+//! 0, flange 1, further patches from 2 in order of y_rail); generate_table instead lets the slots follow the
+//! contacts along dy. More patches than slots: the case gets SlotOverflow and keeps no patch (force is never
+//! dropped silently).
 void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
                       std::size_t wheel, const CaseWheel& solved);
 
