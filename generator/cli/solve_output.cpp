@@ -11,7 +11,7 @@ namespace ctab::cli {
 namespace {
 
 const char* mode_name(gen::ContactMode mode) { return mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"; }
-const char* method_name(gen::NormalMethod method) { return method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"; }
+using gen::method_name;
 const char* wheel_name(int w) { return w == 0 ? "right" : "left"; }
 
 void print_wheel(const char* name, const gen::WheelContact& c) {
