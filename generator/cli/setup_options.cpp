@@ -121,12 +121,10 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
   if (groups & kSolver) {
     add(app.add_option_function<std::string>(
                "--method",
-               [&c](const std::string& method) {
-                 c.method = method == "hertz" ? gen::NormalMethod::Hertz : gen::NormalMethod::Mim1d;
-               },
-               "normal-contact method")
-            ->check(CLI::IsMember({"mim1d", "hertz"}))
-            ->default_str(c.method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"));
+               [&c](const std::string& method) { c.method = *gen::parse_contact_method(method); },
+               "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices())
+            ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d"}))
+            ->default_str(gen::method_name(c.method)));
     add(app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
             ->capture_default_str()
             ->check(finite_range(kMinStripWidth_m, kMaxStripWidth_m, "m")));

@@ -10,8 +10,8 @@
 
 #include "commands.hpp"
 #include "ctab/contact/error.hpp"
-#include "ctab/contact/hertz_strip.hpp"
-#include "ctab/contact/mim1d.hpp"
+#include "ctab/contact/normal_contact.hpp"
+#include "ctab/contact/strip_grid.hpp"
 #include "ctab/io/gap_csv.hpp"
 #include "ctab/io/solution_json.hpp"
 #include "exit_codes.hpp"
@@ -53,17 +53,12 @@ int solve_gap(const SolveOptions& o) {
     throw gen::InputError("solve", 0, "give exactly one of --approach METRES or --load NEWTONS");
   const gen::GapProfile gap = gen::read_gap_csv(o.gap_path);
   const double E_star = gen::effective_modulus(o.setup.material, o.setup.material);
-  gen::NormalSolution solution;
-  if (o.setup.method == gen::NormalMethod::Hertz) {
-    solution = o.approach_m ? gen::solve_hertz_for_approach(gap, E_star, o.setup.strip_width_m, *o.approach_m)
-                            : gen::solve_hertz_for_load(gap, E_star, o.setup.strip_width_m, *o.load);
-  } else {
-    gen::Mim1dOptions options;
-    options.strip_width_m = o.setup.strip_width_m;
-    apply_mim1d_extras(o, options);
-    gen::Mim1dSolver solver(gap, E_star, options);
-    solution = o.approach_m ? solver.solve_for_approach(*o.approach_m) : solver.solve_for_load(*o.load);
-  }
+  // Set-up errors of the strip rungs (too many strips, too few in the gap's range) as messages, not statuses.
+  if (o.setup.method != gen::NormalMethod::Hertz) (void)gen::make_strip_grid(gap, o.setup.strip_width_m);
+  gen::MethodOptions options{o.setup.method, E_star, o.setup.strip_width_m, {}};
+  apply_mim1d_extras(o, options.mim1d);
+  const gen::NormalSolution solution = gen::solve_normal_contact(
+      gap, options, o.approach_m ? gen::Loading::approach(*o.approach_m) : gen::Loading::normal_force(*o.load));
   if (o.json)
     std::cout << gen::to_json(solution).dump(1) << '\n';
   else

@@ -12,7 +12,7 @@ namespace ctab::cli {
 namespace {
 
 const char* mode_name(gen::ContactMode mode) { return mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"; }
-const char* method_name(gen::NormalMethod method) { return method == gen::NormalMethod::Hertz ? "hertz" : "mim1d"; }
+using gen::method_name;
 const char* wheel_name(std::size_t w) { return w == 0 ? "right" : "left"; }
 
 // The table's name of a wheel's outcome ("converged", ..., "solver-exception").

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <numbers>
 
@@ -12,12 +13,47 @@ namespace ctab::gen {
 namespace {
 
 struct DeepestPoint {
+  std::size_t k = 0;
   double y = 0.0, h = 0.0, A = 0.0, B = 0.0;
 };
 
+// Lateral curvature rule (README "Method ladder", hertz): the local B at the contact point when B >= A/20;
+// otherwise (negative, i.e. concave, or nearly flat) the patch-mean lateral curvature, floored at A/20.
+constexpr double kCurvatureRatioLimit = 20.0;       // B >= A/20: CONTACT's R_y <= 20 R_x rule
+constexpr double kMeanCurvatureHalfSpan_m = 10e-3;  // CONTACT clips the patch to +-10 mm around the point
+constexpr int kMeanCurvatureIterations = 20;        // fixed point on (delta, B) for a prescribed load
+constexpr double kMeanCurvatureTolerance = 1e-9;    // relative change of B that ends it
+
+// dh/dy at node i: central difference (one-sided at the ends).
+double gap_slope(const GapProfile& gap, std::size_t i) {
+  const std::size_t lo = i == 0 ? 0 : i - 1, hi = std::min(i + 1, gap.size() - 1);
+  return (gap.h_m[hi] - gap.h_m[lo]) / (gap.y_m[hi] - gap.y_m[lo]);
+}
+
+// Patch-mean lateral curvature over the interpenetration run {h < h_k + depth} around the deepest node k,
+// clipped to +-10 mm: B_mean = [h'(y_e) - h'(y_s)] / (2 (y_e - y_s)), i.e. half the mean of h'' over the run.
+// This is CONTACT's estimate kappa ~ Delta(alpha)/Delta(s) between the two ends of the interpenetration region
+// (eve70a/CONTACT m_wr_locatecp.f90 estimate_curvatures_v2; ../shared/facts/methods_and_tables.md 1.1.1), with
+// alpha ~ dh/dy in the contact plane and B = kappa/2. NaN when the run holds a single node.
+double mean_lateral_curvature(const GapProfile& gap, std::size_t k, double depth_m) {
+  const double level = gap.h_m[k] + depth_m, y_k = gap.y_m[k];
+  std::size_t s = k, e = k;
+  while (s > 0 && gap.h_m[s - 1] < level && y_k - gap.y_m[s - 1] <= kMeanCurvatureHalfSpan_m) --s;
+  while (e + 1 < gap.size() && gap.h_m[e + 1] < level && gap.y_m[e + 1] - y_k <= kMeanCurvatureHalfSpan_m) ++e;
+  if (e == s) return std::numeric_limits<double>::quiet_NaN();
+  return (gap_slope(gap, e) - gap_slope(gap, s)) / (2.0 * (gap.y_m[e] - gap.y_m[s]));
+}
+
+double lateral_curvature(const GapProfile& gap, const DeepestPoint& point, double depth_m) {
+  const double floor = point.A / kCurvatureRatioLimit, local = gap.B_per_m[point.k];
+  if (local >= floor) return local;
+  const double mean = mean_lateral_curvature(gap, point.k, depth_m);
+  return std::isfinite(mean) ? std::max(mean, floor) : floor;
+}
+
 DeepestPoint deepest_point(const GapProfile& gap) {
   const auto k = static_cast<std::size_t>(std::min_element(gap.h_m.begin(), gap.h_m.end()) - gap.h_m.begin());
-  return {gap.y_m[k], gap.h_m[k], gap.A_per_m[k], std::max(gap.B_per_m[k], gap.A_per_m[k] / 20.0)};
+  return {k, gap.y_m[k], gap.h_m[k], gap.A_per_m[k], std::max(gap.B_per_m[k], gap.A_per_m[k] / kCurvatureRatioLimit)};
 }
 
 NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point, double strip_width_m,
@@ -55,11 +91,12 @@ NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point
 
 NormalSolution solve_hertz_for_approach(const GapProfile& gap, double E_star_Pa, double strip_width_m, double approach_m) {
   const auto start = std::chrono::steady_clock::now();
-  const DeepestPoint point = deepest_point(gap);
+  DeepestPoint point = deepest_point(gap);
   HertzContact contact;
   if (std::isfinite(approach_m) && approach_m <= point.h) {
     contact.status = SolveStatus::NoContact;
   } else {
+    point.B = lateral_curvature(gap, point, approach_m - point.h);
     contact = hertz_from_approach(point.A, point.B, E_star_Pa, approach_m - point.h);
   }
   return make_patch(contact, point, strip_width_m, start);
@@ -67,8 +104,17 @@ NormalSolution solve_hertz_for_approach(const GapProfile& gap, double E_star_Pa,
 
 NormalSolution solve_hertz_for_load(const GapProfile& gap, double E_star_Pa, double strip_width_m, double normal_force_N) {
   const auto start = std::chrono::steady_clock::now();
-  const DeepestPoint point = deepest_point(gap);
-  return make_patch(hertz_from_load(point.A, point.B, E_star_Pa, normal_force_N), point, strip_width_m, start);
+  DeepestPoint point = deepest_point(gap);
+  HertzContact contact = hertz_from_load(point.A, point.B, E_star_Pa, normal_force_N);
+  // A patch-mean curvature depends on the patch, the patch on the curvature: fixed point on (delta, B).
+  for (int i = 0; i < kMeanCurvatureIterations && contact.status == SolveStatus::Converged; ++i) {
+    const double B = lateral_curvature(gap, point, contact.approach_m);
+    const bool settled = std::abs(B - point.B) <= kMeanCurvatureTolerance * point.B;
+    point.B = B;
+    contact = hertz_from_load(point.A, point.B, E_star_Pa, normal_force_N);
+    if (settled) break;
+  }
+  return make_patch(contact, point, strip_width_m, start);
 }
 
 }  // namespace ctab::gen

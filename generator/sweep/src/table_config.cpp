@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
@@ -35,7 +36,7 @@ poisson_ratio = 0.3
 
 [solver]
 mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "wheel" (single wheel, roll 0)
-method = "mim1d"         # "mim1d" or "hertz"
+method = "mim1d"         # "hertz", "kp", "analyn" or "mim1d" (README "Method ladder")
 strip_width_m = 0.2e-3
 
 [axes]
@@ -217,10 +218,12 @@ void read_solver(const Reader& r, TableConfig& c) {
   const std::string mode = r.text("solver", "mode", "wheelset"), method = r.text("solver", "method", "mim1d");
   if (mode != "wheelset" && mode != "wheel")
     r.fail(*r.find("solver", "mode"), "solver.mode", "expected \"wheelset\" or \"wheel\", got \"" + mode + "\"");
-  if (method != "mim1d" && method != "hertz")
-    r.fail(*r.find("solver", "method"), "solver.method", "expected \"mim1d\" or \"hertz\", got \"" + method + "\"");
+  const std::optional<ContactMethod> parsed = parse_contact_method(method);
+  if (!parsed)
+    r.fail(*r.find("solver", "method"), "solver.method",
+           "expected one of " + contact_method_choices() + ", got \"" + method + "\"");
   c.mode = mode == "wheel" ? ContactMode::SingleWheel : ContactMode::Wheelset;
-  c.method = method == "hertz" ? NormalMethod::Hertz : NormalMethod::Mim1d;
+  c.method = *parsed;
   c.strip_width_m = r.number_in("solver", "strip_width_m", c.strip_width_m, kMinStripWidth_m, kMaxStripWidth_m,
                                 "a strip width in [1e-05, 0.005] m");
 }

@@ -398,7 +398,7 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["rail_profile_sha256"] = sha256_hex(setup.rail->z_samples().data(), setup.rail->z_samples().size() * sizeof(double));
   text["rail_inclination"] = config.inclination_text;
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
-  text["method"] = config.method == NormalMethod::Hertz ? "hertz" : "mim1d";
+  text["method"] = method_name(config.method);
   text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;

@@ -8,8 +8,8 @@
 #include <numbers>
 
 #include "ctab/contact/hertz.hpp"
-#include "ctab/contact/hertz_strip.hpp"
 #include "ctab/contact/mim1d.hpp"
+#include "ctab/contact/normal_contact.hpp"
 #include "ctab/contact/root_finding.hpp"
 #include "ctab/contact/strip_grid.hpp"
 
@@ -206,7 +206,10 @@ double expected_approach(const SideGeometry& side, const GapMinimum& m, double d
 // Why a patch's normal solve failed, in words.
 std::string patch_failure(NormalMethod method, const NormalSolution& solution, std::size_t slot) {
   const std::string at = " at patch " + std::to_string(slot + 1);
-  const char* solver = method == NormalMethod::Hertz ? "Hertz" : "MIM-1D";
+  const char* solver = method == NormalMethod::Mim1d   ? "MIM-1D"
+                       : method == NormalMethod::Hertz ? "Hertz"
+                       : method == NormalMethod::Kp    ? "KP"
+                                                       : "ANALYN";
   switch (solution.status) {
     case SolveStatus::MaxIterations:
       return std::string(solver) + " did not converge in " + std::to_string(solution.iterations) + " iterations" + at;
@@ -328,9 +331,8 @@ class WheelCase {
       solve_patch_at(main, value_);
     } else {
       const double force = load_ == LoadKind::VerticalForce ? value_ / main.c : value_;
-      main.solution = options_.method == NormalMethod::Hertz
-                          ? solve_hertz_for_load(main.gap, E_star_, options_.mim1d.strip_width_m, force)
-                          : main.solver->solve_for_load(force);
+      main.solution = options_.method == NormalMethod::Mim1d ? main.solver->solve_for_load(force)
+                                                             : solve_other_rung(main, Loading::normal_force(force));
       result_.iterations += main.solution.iterations;
       result_.vertical_approach_m = main.solution.approach_m / main.c;
     }
@@ -339,9 +341,9 @@ class WheelCase {
     return is_success(status) ? SolveStatus::Converged : status;
   }
 
-  // The Hertz path needs no strip solver; MIM-1D gets one per patch (reused from case to case).
+  // Only MIM-1D keeps a strip solver per patch (reused from case to case); the other rungs are one-shot.
   bool prepare(PatchProblem& p) {
-    if (options_.method == NormalMethod::Hertz) return true;
+    if (options_.method != NormalMethod::Mim1d) return true;
     detail_ = prepare_mim1d_solver(p, E_star_, options_.mim1d);
     return detail_.empty();
   }
@@ -394,11 +396,18 @@ class WheelCase {
 
   void solve_patch_at(PatchProblem& p, double vertical_approach) {
     const double approach = vertical_approach * p.c;
-    if (options_.method == NormalMethod::Hertz)
-      p.solution = solve_hertz_for_approach(p.gap, E_star_, options_.mim1d.strip_width_m, approach);
-    else
-      p.solution = p.solver->solve_for_approach(approach);
+    p.solution = options_.method == NormalMethod::Mim1d ? p.solver->solve_for_approach(approach)
+                                                        : solve_other_rung(p, Loading::approach(approach));
     result_.iterations += p.solution.iterations;
+  }
+
+  // A rung other than MIM-1D on a patch's strip problem (normal_contact.hpp).
+  NormalSolution solve_other_rung(const PatchProblem& p, Loading loading) const {
+    MethodOptions method;
+    method.method = options_.method;
+    method.E_star_Pa = E_star_;
+    method.strip_width_m = options_.mim1d.strip_width_m;
+    return solve_normal_contact(p.gap, method, loading);
   }
 
   bool inside_window(const GapMinimum& m) const {

@@ -3,6 +3,7 @@
 //! Eigen so that configurations can hold them.
 #include <cstdint>
 
+#include "ctab/contact/contact_method.hpp"
 #include "ctab/contact/mim1d_options.hpp"
 
 namespace ctab::gen {
@@ -13,7 +14,8 @@ enum class LoadKind : std::int8_t {
   Approach = 2,       //!< vertical approach of the wheel beyond first contact [m]
 };
 
-enum class NormalMethod : std::int8_t { Mim1d = 0, Hertz = 1 };
+//! The rung of the method ladder (contact_method.hpp); the earlier name, same values.
+using NormalMethod = ContactMethod;
 
 struct WheelRailOptions {
   NormalMethod method = NormalMethod::Mim1d;

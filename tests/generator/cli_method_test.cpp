@@ -1,0 +1,79 @@
+// `--method hertz|kp|analyn|mim1d` end to end: `ctab solve --gap`, the table config key solver.method (into the
+// table's `method` attribute), and `ctab solve --config` with it.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "cli_run.hpp"
+#include "ctab/contact/error.hpp"
+#include "ctab/sweep/table_generator.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+const std::string kSphere = ctab::test::source_path("examples/gaps/hertz_sphere_r40.csv");
+const char* const kMethods[] = {"hertz", "kp", "analyn", "mim1d"};
+
+std::string small_config(const std::string& method) {
+  return "[solver]\nmode = \"wheel\"\nmethod = \"" + method +
+         "\"\n[axes]\nlateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 2e-3 }\nvertical_load_N = 78.5e3\n";
+}
+
+}  // namespace
+
+TEST(CliMethod, SolveGapWithEveryRung) {
+  for (const char* method : kMethods) {
+    const ctab::test::CtabRun run =
+        ctab::test::run_ctab({"solve", "--gap", kSphere, "--load", "963e3", "--method", method, "--json"});
+    ASSERT_EQ(run.exit_code, 0) << method << ": " << run.output();
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["method"], method);
+    EXPECT_EQ(json["status"], "converged") << method;
+    EXPECT_NEAR(json["normal_load_N"].get<double>(), 963e3, 1e-3) << method;
+    // Hertz area 125.6 mm^2; KP is +6.6 % on a circle by construction (method_ladder_test).
+    const double area = json["patches"][0]["area_m2"].get<double>();
+    EXPECT_NEAR(area, std::string(method) == "kp" ? 133.9e-6 : 125.6e-6, 0.4e-6) << method;
+  }
+}
+
+TEST(CliMethod, UnknownMethodIsAnInputError) {
+  const ctab::test::CtabRun run = ctab::test::run_ctab({"solve", "--gap", kSphere, "--load", "1e3", "--method", "bem"});
+  EXPECT_EQ(run.exit_code, 2) << run.output();
+  EXPECT_NE(run.err.find("--method"), std::string::npos) << run.err;
+  const std::string path = ctab::test::write_temp("bad_method.toml", small_config("stripes"));
+  try {
+    (void)ctab::gen::read_table_config(path);
+    ADD_FAILURE() << "no error for method = \"stripes\"";
+  } catch (const ctab::gen::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected one of hertz, kp, analyn, mim1d, got \"stripes\""), std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.line(), 3u);
+  }
+}
+
+// A table with each of the new rungs: the attribute names the method, every case is solved, and
+// `ctab solve --config` reproduces an entry with the same method.
+TEST(CliMethod, TableConfigMethodReachesTheTableAndSolveConfig) {
+  for (const char* method : {"kp", "analyn"}) {
+    const std::string path = ctab::test::write_temp(std::string("method_") + method + ".toml", small_config(method));
+    const ctab::gen::TableConfig config = ctab::gen::read_table_config(path);
+    const ctab::tables::Table table = ctab::gen::generate_table(config, ctab::gen::GeneratorInfo{});
+    EXPECT_EQ(table.text_attributes.at("method"), method);
+    double right_force_at_0 = 0.0;
+    for (std::size_t i = 0; i < table.lateral_displacement_m.size(); ++i) {
+      const std::size_t k = table.wheel_index(i, 0, 0);
+      EXPECT_EQ(table.status[k], ctab::tables::CaseStatus::Converged) << method << " dy #" << i;
+      if (i == 1)
+        for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
+          const std::size_t p = table.patch_index(i, 0, 0, slot);
+          if (table.patch.present[p]) right_force_at_0 += table.patch.normal_force_N[p];
+        }
+    }
+    const ctab::test::CtabRun run = ctab::test::run_ctab({"solve", "--config", path, "--dy", "0", "--json"});
+    ASSERT_EQ(run.exit_code, 0) << run.output();
+    const auto json = nlohmann::json::parse(run.out);
+    EXPECT_EQ(json["method"], method);
+    EXPECT_GT(right_force_at_0, 70e3) << method;
+  }
+}
