@@ -88,17 +88,21 @@ TEST(ContactMethod, NamesRoundTripAndValuesAreFixed) {
   EXPECT_EQ(static_cast<int>(ContactMethod::Analyn), 3);
   EXPECT_FALSE(parse_contact_method("KP").has_value());
   EXPECT_FALSE(parse_contact_method("").has_value());
-  EXPECT_FALSE(parse_contact_method("bem2d").has_value());  // not before integration
-  EXPECT_EQ(contact_method_choices(), "hertz, kp, analyn, mim1d");
+  EXPECT_EQ(static_cast<int>(ContactMethod::Bem2d), 4);
+  EXPECT_EQ(parse_contact_method("bem2d"), ContactMethod::Bem2d);
+  EXPECT_EQ(contact_method_choices(), "hertz, kp, analyn, mim1d, bem2d");
 }
 
 // Hertz's sphere (R = 40 mm, 963 kN): hertz is exact, analyn is exact up to the strip discretisation (it
 // reduces to Hertz for h = B y^2, Sichani et al. 2014; methods_and_tables.md 1.4), mim1d within the paper's 1 %.
 TEST(MethodLadder, HertzSphereAtPrescribedForce) {
   const HertzContact exact = hertz_from_load(1.0 / 0.08, 1.0 / 0.08, kEStar, kSphereForce_N);
-  // Measured at 0.2 mm strips: hertz 0, analyn +0.05 % area / -0.01 % pmax, mim1d +0.03 % / -0.01 %.
-  const std::vector<std::pair<ContactMethod, double>> tolerance{
-      {ContactMethod::Hertz, 1e-9}, {ContactMethod::Analyn, 0.002}, {ContactMethod::Mim1d, 0.002}};
+  // Measured at 0.2 mm strips: hertz 0, analyn +0.05 % area / -0.01 % pmax, mim1d +0.03 % / -0.01 %; bem2d on
+  // 0.2 mm square elements +0.84 % / -0.02 % (the area of whole elements: CONTACT's own figures on that mesh).
+  const std::vector<std::pair<ContactMethod, double>> tolerance{{ContactMethod::Hertz, 1e-9},
+                                                                {ContactMethod::Analyn, 0.002},
+                                                                {ContactMethod::Mim1d, 0.002},
+                                                                {ContactMethod::Bem2d, 0.01}};
   for (const auto& [method, tol] : tolerance) {
     const NormalSolution s = solve_normal_contact(paper::hertz_sphere_gap(), options_for(method), Loading::normal_force(kSphereForce_N));
     ASSERT_EQ(s.status, SolveStatus::Converged) << method_name(method);

@@ -7,7 +7,8 @@ namespace ctab::gen {
 namespace {
 
 // Cheapest first (the order of --help and of error messages).
-constexpr std::array kMethods{ContactMethod::Hertz, ContactMethod::Kp, ContactMethod::Analyn, ContactMethod::Mim1d};
+constexpr std::array kMethods{ContactMethod::Hertz, ContactMethod::Kp, ContactMethod::Analyn, ContactMethod::Mim1d,
+                              ContactMethod::Bem2d};
 
 }  // namespace
 
@@ -17,6 +18,7 @@ const char* method_name(ContactMethod method) noexcept {
     case ContactMethod::Hertz: return "hertz";
     case ContactMethod::Kp: return "kp";
     case ContactMethod::Analyn: return "analyn";
+    case ContactMethod::Bem2d: return "bem2d";
   }
   return "unknown";
 }

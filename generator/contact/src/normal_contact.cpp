@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ctab/contact/analyn.hpp"
+#include "ctab/contact/bem2d.hpp"
 #include "ctab/contact/error.hpp"
 #include "ctab/contact/hertz_strip.hpp"
 #include "ctab/contact/kik_piotrowski.hpp"
@@ -35,6 +36,13 @@ NormalSolution solve_mim1d(const GapProfile& gap, const MethodOptions& options, 
   }
 }
 
+// The reference on square elements of the strip width (one element row per strip).
+NormalSolution solve_bem2d(const GapProfile& gap, const MethodOptions& options, Loading loading) {
+  const Bem2dGrid grid{.dx_m = options.strip_width_m, .dy_m = options.strip_width_m};
+  return approach_given(loading) ? solve_bem2d_for_approach(gap, options.E_star_Pa, grid, loading.value)
+                                 : solve_bem2d_for_load(gap, options.E_star_Pa, grid, loading.value);
+}
+
 // Input every rung needs; false for InvalidInput.
 bool valid_input(const GapProfile& gap, const MethodOptions& options, Loading loading) {
   if (!(std::isfinite(options.E_star_Pa) && options.E_star_Pa > 0.0)) return false;
@@ -61,9 +69,7 @@ NormalSolution solve_normal_contact(const GapProfile& gap, const MethodOptions& 
     case ContactMethod::Kp: return solve_rung(solve_kp_for_approach, solve_kp_for_load, gap, options, loading);
     case ContactMethod::Analyn: return solve_rung(solve_analyn_for_approach, solve_analyn_for_load, gap, options, loading);
     case ContactMethod::Mim1d: return solve_mim1d(gap, options, loading);
-    // bem2d plugs in here at integration (ContactMethod::Bem2d = 4, contact_method.hpp):
-    //   case ContactMethod::Bem2d: return approach_given(loading) ? solve_bem2d_for_approach(gap, E*, grid, ...)
-    //                                                             : solve_bem2d_for_load(gap, E*, grid, ...);
+    case ContactMethod::Bem2d: return solve_bem2d(gap, options, loading);
   }
   return status_solution(SolveStatus::InvalidInput, method_name(options.method));
 }

@@ -15,16 +15,16 @@ enum class ContactMethod : std::int8_t {
   Hertz = 1,   //!< one Hertz ellipse at the deepest point of the gap, hertz_strip.hpp
   Kp = 2,      //!< Kik-Piotrowski virtual penetration (Piotrowski & Kik 2008), kik_piotrowski.hpp
   Analyn = 3,  //!< ANALYN analytical surface-deformation correction (Sichani, Enblom & Berg 2014), analyn.hpp
-  // 4 is reserved for bem2d (the 2-D boundary-element reference), added at integration.
+  Bem2d = 4,   //!< 2-D boundary-element reference (Love elements, Polonsky-Keer CG, FFT), bem2d.hpp
 };
 
-//! "mim1d", "hertz", "kp", "analyn"; never null.
+//! "mim1d", "hertz", "kp", "analyn", "bem2d"; never null.
 [[nodiscard]] const char* method_name(ContactMethod method) noexcept;
 
 //! The method named `name` (exactly as method_name writes it), or nothing.
 [[nodiscard]] std::optional<ContactMethod> parse_contact_method(std::string_view name) noexcept;
 
-//! The accepted names for messages and --help: "hertz, kp, analyn, mim1d".
+//! The accepted names for messages and --help: "hertz, kp, analyn, mim1d, bem2d".
 [[nodiscard]] std::string contact_method_choices();
 
 }  // namespace ctab::gen
