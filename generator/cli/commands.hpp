@@ -20,6 +20,8 @@ Command add_inspect_command(CLI::App& parent);
 Command add_config_command(CLI::App& parent);
 Command add_export_command(CLI::App& parent);
 Command add_query_command(CLI::App& parent);
+Command add_merge_command(CLI::App& parent);
+Command add_batch_command(CLI::App& parent);
 //! `ctab bench lookup`, registered on the bench subcommand.
 Command add_bench_lookup_subcommand(CLI::App& bench);
 

@@ -10,10 +10,13 @@
 #include "commands.hpp"
 #include "ctab/contact/error.hpp"
 #include "ctab/contact/solve_status.hpp"
+#include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/table_generator.hpp"
+#include "ctab/sweep/table_shard.hpp"
 #include "exit_codes.hpp"
 #include "output_guard.hpp"
 #include "setup_options.hpp"
+#include "table_output.hpp"
 #include "version.hpp"
 
 namespace ctab::cli {
@@ -26,41 +29,8 @@ struct GenerateOptions {
   int threads = 0;
   bool quiet = false;
   bool force = false;
+  std::string shard;  // "K/N" or empty
 };
-
-// A progress bar on a terminal, a plain line every few seconds otherwise.
-class ProgressReporter {
- public:
-  explicit ProgressReporter(bool quiet) : quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
-  void operator()(std::size_t done, std::size_t total) {
-    if (quiet_ || total == 0) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
-    const double left = rate > 0 ? static_cast<double>(total - done) / rate : 0.0;
-    if (terminal_) {
-      const int width = 40, filled = static_cast<int>(width * static_cast<double>(done) / static_cast<double>(total));
-      std::fprintf(stderr, "\r[%.*s%*s] %zu/%zu cases, %.0f/s, %.1f s left ", filled, "########################################",
-                   width - filled, "", done, total, rate, left);
-      if (done == total) std::fputc('\n', stderr);
-    } else if (done == total || elapsed - last_line_ >= 5.0) {
-      last_line_ = elapsed;
-      std::fprintf(stderr, "ctab generate: %zu/%zu cases, %.0f cases/s, %.1f s left\n", done, total, rate, left);
-    }
-  }
-
- private:
-  bool quiet_, terminal_;
-  std::chrono::steady_clock::time_point start_;
-  double last_line_ = -1e9;
-};
-
-// The writer names its temporary file in some messages; the user gave OUTPUT, so messages name OUTPUT.
-std::string name_output(std::string message, const std::string& output) {
-  const std::string temporary = temporary_table_path(output);
-  for (auto at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at + output.size()))
-    message.replace(at, temporary.size(), output);
-  return message;
-}
 
 // Failed cases are always reported (also with --quiet): the table is written, the statuses say which.
 bool report_failed_cases(const std::map<int, std::size_t>& counts, const std::string& output) {
@@ -80,9 +50,27 @@ bool report_failed_cases(const std::map<int, std::size_t>& counts, const std::st
   return failed > 0;
 }
 
+// `--shard K/N`: the shard's rows only, into a shard file (table_shard.hpp); its own cases decide the exit code.
+int run_shard(const gen::TableConfig& config, const gen::GeneratorInfo& info, gen::ShardSpec spec,
+              const GenerateOptions& o, const gen::ProgressCallback& progress) {
+  const tables::Table shard = gen::generate_shard(config, info, spec, progress);
+  write_table_checked(shard, o.output);
+  const std::vector<std::size_t> rows = *gen::parse_rows(shard.text_attributes.at("shard_rows"), shard.n_dy());
+  std::map<int, std::size_t> counts;
+  for (const std::size_t row : rows)
+    for (std::size_t i_second = 0; i_second < shard.n_second(); ++i_second)
+      for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel)
+        ++counts[static_cast<int>(shard.status[shard.wheel_index(row, i_second, wheel)])];
+  if (!o.quiet)
+    std::printf("ctab generate: wrote shard %zu/%zu to %s: %zu of %zu lateral shifts (rows %s)\n", spec.index,
+                spec.count, o.output.c_str(), rows.size(), shard.n_dy(), shard.text_attributes.at("shard_rows").c_str());
+  return report_failed_cases(counts, o.output) ? kExitCaseFailed : kExitSuccess;
+}
+
 int run_generate(const GenerateOptions& o) {
   const gen::TableConfig config =
       o.config_path.empty() ? default_table_config("default config") : gen::read_table_config(o.config_path);
+  const gen::ShardSpec shard = o.shard.empty() ? gen::ShardSpec{} : gen::parse_shard_spec(o.shard, "--shard");
   check_output_path(o.output, o.config_path, o.force);  // before the sweep: a bad output costs no solving time
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;
@@ -92,11 +80,12 @@ int run_generate(const GenerateOptions& o) {
   info.threads = sweep_threads(o.threads);
   const InterruptCleanup cleanup(o.output);
   const auto start = std::chrono::steady_clock::now();
-  ProgressReporter reporter(o.quiet);
-  const tables::Table table = gen::generate_table(config, info, [&](std::size_t d, std::size_t t) { reporter(d, t); });
+  ProgressReporter reporter(o.quiet, "ctab generate");
+  const auto progress = [&](std::size_t d, std::size_t t) { reporter(d, t); };
+  if (!o.shard.empty()) return run_shard(config, info, shard, o, progress);
+  const tables::Table table = gen::generate_table(config, info, progress);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const tables::TableResult written = tables::write_table(table, o.output);
-  if (!written.ok()) throw IoError(name_output(written.message, o.output));
+  write_table_checked(table, o.output);
   std::map<int, std::size_t> counts;
   for (const auto s : table.status) ++counts[static_cast<int>(s)];
   if (!o.quiet) {
@@ -122,6 +111,8 @@ Command add_generate_command(CLI::App& parent) {
       ->capture_default_str();
   app->add_flag("--force", o->force, "replace OUTPUT even if it is not an HDF5 table (a symlink, FIFO, other file)");
   add_threads_option(*app, o->threads);
+  app->add_option("--shard", o->shard,
+                  "K/N: solve only shard K of N (1 <= K <= N) into a shard file for `ctab merge` (job arrays)");
   app->add_flag("--quiet", o->quiet, "no progress and no summary (errors and failed cases are still reported)");
   return {app, [o] { return run_generate(*o); }};
 }

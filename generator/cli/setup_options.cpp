@@ -123,7 +123,7 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
                "--method",
                [&c](const std::string& method) { c.method = *gen::parse_contact_method(method); },
                "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices())
-            ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d"}))
+            ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d", "bem2d"}))
             ->default_str(gen::method_name(c.method)));
     add(app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
             ->capture_default_str()

@@ -5,6 +5,9 @@
 #include <optional>
 #include <tuple>
 
+#include "ctab/sweep/table_rows.hpp"
+#include "ctab/wheelrail/wheelrail_options.hpp"
+
 namespace ctab::gen {
 
 namespace {
@@ -99,6 +102,65 @@ std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& s
     for (std::size_t i = 0; i < patches.size(); ++i) previous[slot_of[i]] = Occupant{patches[i].y_rail_m, patches[i].flange};
   }
   return out;
+}
+
+namespace {
+
+// The patches of one wheel-case of a table in order of rail position, with the slots they are stored in.
+SlotCase stored_case(const tables::Table& table, std::size_t i_dy, std::size_t i_second, std::size_t wheel,
+                     std::vector<std::size_t>& stored_slot) {
+  SlotCase out;
+  stored_slot.clear();
+  out.success = tables::is_success(table.status[table.wheel_index(i_dy, i_second, wheel)]);
+  if (!out.success) return out;
+  for (std::size_t slot = 0; slot < table.n_slots; ++slot)
+    if (table.patch.present[table.patch_index(i_dy, i_second, wheel, slot)] != 0) stored_slot.push_back(slot);
+  const auto y_rail = [&](std::size_t slot) { return table.patch.y_rail_m[table.patch_index(i_dy, i_second, wheel, slot)]; };
+  std::stable_sort(stored_slot.begin(), stored_slot.end(),
+                   [&](std::size_t a, std::size_t b) { return y_rail(a) < y_rail(b); });
+  for (const std::size_t slot : stored_slot) {
+    const std::size_t k = table.patch_index(i_dy, i_second, wheel, slot);
+    out.patches.push_back({table.patch.y_rail_m[k], table.patch.y_wheel_m[k] <= kFlangeRootS_m});
+  }
+  return out;
+}
+
+// A full permutation of the slots: stored slot -> assigned slot, empty slots to the free ones in order.
+std::vector<std::size_t> slot_permutation(const std::vector<std::size_t>& stored_slot,
+                                          const std::vector<std::size_t>& slot_of, std::size_t n_slots) {
+  std::vector<std::size_t> new_slot(n_slots, n_slots);
+  std::vector<bool> used(n_slots, false);
+  for (std::size_t i = 0; i < stored_slot.size(); ++i) {
+    new_slot[stored_slot[i]] = slot_of[i];
+    used[slot_of[i]] = true;
+  }
+  std::size_t next_free = 0;
+  for (std::size_t& slot : new_slot) {
+    if (slot != n_slots) continue;
+    while (used[next_free]) ++next_free;
+    slot = next_free;
+    used[next_free] = true;
+  }
+  return new_slot;
+}
+
+}  // namespace
+
+void assign_table_slots_along_dy(tables::Table& table) {
+  const std::size_t n_dy = table.n_dy(), n_second = table.n_second();
+  std::vector<SlotCase> series(n_dy);
+  std::vector<std::vector<std::size_t>> stored(n_dy);
+  for (std::size_t i_second = 0; i_second < n_second; ++i_second)
+    for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel) {
+      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) series[i_dy] = stored_case(table, i_dy, i_second, wheel, stored[i_dy]);
+      const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots);
+      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) {
+        // A stored case never has more patches than slots, so it cannot overflow here; keep it as stored if it did.
+        if (!series[i_dy].success || slots[i_dy].overflow) continue;
+        permute_slots(table, table.wheel_index(i_dy, i_second, wheel),
+                      slot_permutation(stored[i_dy], slots[i_dy].slot_of, table.n_slots));
+      }
+    }
 }
 
 }  // namespace ctab::gen

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "ctab/contact/error.hpp"
@@ -307,26 +308,28 @@ void run_with_progress(const std::function<void()>& work, const std::atomic<std:
   if (progress) progress(total, total);
 }
 
-// Rolls (one per lateral shift) then every solved wheel of every case, each task writing only its own slot.
-// Results are indexed (side, i_dy, i_second).
-std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, std::vector<CaseRoll>& rolls,
-                             const ProgressCallback& progress) {
-  const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size(), total = plan.cases() * plan.sides;
-  rolls.assign(n_dy, CaseRoll{});
+// Rolls (one per selected lateral shift) then every solved wheel of every selected case, each task writing only
+// its own slot. `rows` are lateral-shift indices; results are indexed (side, k, i_second) with k the position in
+// `rows`, rolls by k. A case's solve depends on nothing but its own inputs, so any subset gives the same values.
+std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
+                             std::vector<CaseRoll>& rolls, const ProgressCallback& progress) {
+  const std::size_t n_rows = rows.size(), n_second = plan.load_values.size(), row_cases = n_rows * n_second;
+  const std::size_t total = row_cases * plan.sides;
+  rolls = std::vector<CaseRoll>(n_rows);
   std::vector<CaseWheel> results(total);
   std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(plan.threads));  // one per thread
   std::atomic<std::size_t> done{0};
   auto work = [&] {
     // schedule(dynamic): the roll iteration costs more where the contact jumps.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
-    for (std::size_t i = 0; i < n_dy; ++i) rolls[i] = solve_case_roll(setup, plan.dy_m[i]);
+    for (std::size_t k = 0; k < n_rows; ++k) rolls[k] = solve_case_roll(setup, plan.dy_m[rows[k]]);
     // schedule(dynamic): flange cases cost several times tread cases.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
     for (std::size_t task = 0; task < total; ++task) {
-      const std::size_t side = task / plan.cases(), rest = task % plan.cases();
-      const std::size_t i_dy = rest / n_second, i_second = rest % n_second;
+      const std::size_t side = task / row_cases, rest = task % row_cases;
+      const std::size_t k = rest / n_second, i_second = rest % n_second;
       WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
-      results[task] = solve_case_wheel(setup, side, plan.dy_m[i_dy], rolls[i_dy], plan.load_values[i_second], workspace);
+      results[task] = solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace);
       done.fetch_add(1, std::memory_order_relaxed);
     }
   };
@@ -334,8 +337,7 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, std
   return results;
 }
 
-tables::Table assemble(const TableConfig& config, const SweepSetup& setup, const SweepPlan& plan,
-                       const std::vector<CaseRoll>& rolls, const std::vector<CaseWheel>& results) {
+tables::Table empty_table(const TableConfig& config, const SweepPlan& plan) {
   tables::Table table;
   table.lateral_displacement_m = plan.dy_m;
   table.second_axis = plan.load_values;
@@ -344,31 +346,29 @@ tables::Table assemble(const TableConfig& config, const SweepSetup& setup, const
   table.strip_samples = config.strip_samples;
   table.n_slots = config.patch_slots;
   table.allocate();
-  const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size();
-  // The solved wheel at (i_dy, i_second, wheel). Mirrored: the left wheel at dy is the right wheel at -dy (index
-  // n_dy - 1 - i_dy of a symmetric axis).
-  auto solved = [&](std::size_t i_dy, std::size_t i_second, std::size_t wheel) -> const CaseWheel& {
-    if (wheel == 0) return results[i_dy * n_second + i_second];
-    return plan.mirrored ? results[(n_dy - 1 - i_dy) * n_second + i_second]
-                         : results[plan.cases() + i_dy * n_second + i_second];
-  };
-  for (std::size_t i_second = 0; i_second < n_second; ++i_second)
-    for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel) {
-      // Slots follow the contacts along dy: one serial pass per series (slot_assignment.hpp).
-      std::vector<SlotCase> series(n_dy);
-      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) series[i_dy] = slot_case(solved(i_dy, i_second, wheel));
-      const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots);
-      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
-        store_wheel(table, setup, i_dy, i_second, wheel, solved(i_dy, i_second, wheel), slots[i_dy]);
-    }
-  for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
-    for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
-      const std::size_t c = i_dy * n_second + i_second;
-      table.roll_rad[c] = rolls[i_dy].roll_rad;
-      table.rolling_radius_difference_m[c] = solved(i_dy, i_second, 0).contact.rigid_contact.rolling_radius_m -
-                                             solved(i_dy, i_second, 1).contact.rigid_contact.rolling_radius_m;
-    }
   return table;
+}
+
+// Stores the rows `rows` of the sweep's results (see sweep) in `table`.
+void assemble(tables::Table& table, const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
+              const std::vector<CaseRoll>& rolls, const std::vector<CaseWheel>& results) {
+  const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size(), row_cases = rows.size() * n_second;
+  std::vector<std::size_t> position(n_dy, n_dy);  // k of each selected row, n_dy elsewhere
+  for (std::size_t k = 0; k < rows.size(); ++k) position[rows[k]] = k;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
+      const std::size_t i_dy = rows[k];
+      const CaseWheel& right = results[k * n_second + i_second];
+      // Mirrored: the left wheel at dy is the right wheel at -dy (index n_dy - 1 - i_dy of a symmetric axis).
+      const CaseWheel& left = plan.mirrored ? results[position[n_dy - 1 - i_dy] * n_second + i_second]
+                                            : results[row_cases + k * n_second + i_second];
+      store_case_wheel(table, setup, i_dy, i_second, 0, right);
+      store_case_wheel(table, setup, i_dy, i_second, 1, left);
+      const std::size_t c = i_dy * n_second + i_second;
+      table.roll_rad[c] = rolls[k].roll_rad;
+      table.rolling_radius_difference_m[c] =
+          right.contact.rigid_contact.rolling_radius_m - left.contact.rigid_contact.rolling_radius_m;
+    }
 }
 
 std::string utc_now() {
@@ -412,14 +412,56 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
 
 }  // namespace
 
-tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info, const ProgressCallback& progress) {
-  const SweepSetup setup = make_sweep_setup(config);
-  const SweepPlan plan = make_plan(config, info);
+// ---- a sweep in parts ----
+
+struct TableSweep::Impl {
+  TableConfig config;
+  SweepSetup setup;
+  SweepPlan plan;
+  GeneratorInfo info;
+};
+
+TableSweep::TableSweep(const TableConfig& config, const GeneratorInfo& info)
+    : impl_(std::make_unique<Impl>(Impl{config, make_sweep_setup(config), make_plan(config, info), info})) {}
+TableSweep::~TableSweep() = default;
+TableSweep::TableSweep(TableSweep&&) noexcept = default;
+
+std::size_t TableSweep::n_dy() const noexcept { return impl_->plan.dy_m.size(); }
+bool TableSweep::mirrored() const noexcept { return impl_->plan.mirrored; }
+std::size_t TableSweep::wheel_solves(std::size_t rows) const noexcept {
+  return rows * impl_->plan.load_values.size() * impl_->plan.sides;
+}
+tables::Table TableSweep::empty_table() const { return gen::empty_table(impl_->config, impl_->plan); }
+
+void TableSweep::solve_rows(const std::vector<std::size_t>& rows, tables::Table& table,
+                            const ProgressCallback& progress) const {
+  const std::size_t n = n_dy();
+  std::vector<bool> selected(n, false);
+  for (const std::size_t i : rows) {
+    if (i >= n || selected[i]) throw std::invalid_argument("TableSweep::solve_rows: a row out of range or repeated");
+    selected[i] = true;
+  }
+  if (mirrored())
+    for (const std::size_t i : rows)
+      if (!selected[n - 1 - i]) throw std::invalid_argument("TableSweep::solve_rows: rows of a mirrored sweep must be mirror-closed");
   std::vector<CaseRoll> rolls;
-  const std::vector<CaseWheel> results = sweep(setup, plan, rolls, progress);
-  tables::Table table = assemble(config, setup, plan, rolls, results);
+  const std::vector<CaseWheel> results = sweep(impl_->setup, impl_->plan, rows, rolls, progress);
+  assemble(table, impl_->setup, impl_->plan, rows, rolls, results);
+}
+
+void TableSweep::finish(tables::Table& table) const {
+  assign_table_slots_along_dy(table);  // serial, on all rows: slots follow the contacts along dy
   table.jumps = tables::detect_jumps(table);
-  add_provenance(table, config, setup, plan, info);
+  add_provenance(table, impl_->config, impl_->setup, impl_->plan, impl_->info);
+}
+
+tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info, const ProgressCallback& progress) {
+  const TableSweep sweep(config, info);
+  std::vector<std::size_t> rows(sweep.n_dy());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
+  tables::Table table = sweep.empty_table();
+  sweep.solve_rows(rows, table, progress);
+  sweep.finish(table);
   return table;
 }
 

@@ -17,7 +17,6 @@ namespace ctab::gen {
 
 namespace {
 
-constexpr double kFlangeRootS_m = -0.026;  // S1002 sections C-H (flange) start here (EN 13715)
 // Patch window (README "Contact search"): h is sampled while h < kWindowFactor x the expected approach, at least
 // kMinimumWindowDepth_m; chosen so that close minima (tread and flange root at dy = 5 mm) share a patch as CONTACT
 // combines them. A contact that reaches the window's end doubles the depth, at most kWindowAttempts times.

@@ -17,6 +17,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "ctab/tables/table.hpp"
+
 namespace ctab::gen {
 
 //! One patch as slot assignment sees it.
@@ -44,5 +46,12 @@ inline constexpr double kZoneChangeMatch_m = 1e-3;
 
 //! Slots for a series of cases in increasing dy (see the file comment).
 [[nodiscard]] std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& series, std::size_t n_slots);
+
+//! The same on a whole table whose cases were stored one by one (each in the zone rule): for every (second-axis
+//! value, wheel) series, the patches of each case, taken in order of rail position (so that the result depends
+//! only on the patches, not on how they were stored), are moved to the slots assign_slots_along_dy gives them.
+//! A patch is a flange patch when its wheel contact point y_wheel_m <= kFlangeRootS_m. Runs on complete tables
+//! (a single run, merged shards), so that the slots never depend on how the rows were solved.
+void assign_table_slots_along_dy(tables::Table& table);
 
 }  // namespace ctab::gen

@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ctab/contact/error.hpp"
 #include "ctab/sweep/table_config.hpp"
@@ -115,6 +116,38 @@ void store_case_wheel(tables::Table& table, const SweepSetup& setup, std::size_t
 
 //! Progress observer, called from the calling thread only (about every 0.1 s) with cases done and total.
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
+
+//! A sweep run in parts (shards of `ctab generate --shard`, blocks handed to MPI ranks): set up once, then the
+//! rows (lateral-shift indices, every load and both wheels) of any subset solved into a table of the full shape.
+//! A case's values do not depend on which other rows are solved with it, so the rows are bit-identical to those
+//! of generate_table, which is this class over all rows. For a mirrored sweep (header above) the rows must be
+//! mirror-closed (i and n_dy - 1 - i together): the left wheel of row i is the right wheel of row n_dy - 1 - i.
+class TableSweep {
+ public:
+  //! Set-up (serial); throws InputError as make_sweep_setup.
+  TableSweep(const TableConfig& config, const GeneratorInfo& info);
+  ~TableSweep();
+  TableSweep(TableSweep&&) noexcept;
+  TableSweep(const TableSweep&) = delete;
+  TableSweep& operator=(const TableSweep&) = delete;
+  TableSweep& operator=(TableSweep&&) = delete;
+
+  [[nodiscard]] std::size_t n_dy() const noexcept;
+  [[nodiscard]] bool mirrored() const noexcept;  //!< only the right wheel is solved
+  [[nodiscard]] std::size_t wheel_solves(std::size_t rows) const noexcept;  //!< wheel solves of `rows` rows
+  //! A table of the config's shape: axes set, every case zero with status Converged, no jumps, no provenance.
+  [[nodiscard]] tables::Table empty_table() const;
+  //! Solves `rows` (OpenMP, GeneratorInfo::threads) and stores their cases in `table` (from empty_table); other
+  //! rows are untouched. Throws std::invalid_argument for a row out of range, repeated, or not mirror-closed.
+  void solve_rows(const std::vector<std::size_t>& rows, tables::Table& table,
+                  const ProgressCallback& progress = {}) const;
+  //! Once every row is in: the contact jumps and the provenance attributes.
+  void finish(tables::Table& table) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 //! Generates the table. Throws InputError at set-up (e.g. a profile file that cannot be read).
 [[nodiscard]] tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info,

@@ -8,6 +8,10 @@
 
 namespace ctab::gen {
 
+//! Wheel profile coordinate S [m] where the flange zone begins: S1002 sections C-H (EN 13715). A patch whose
+//! contact point lies at S <= this is a flange patch, else a tread patch.
+inline constexpr double kFlangeRootS_m = -0.026;
+
 enum class LoadKind : std::int8_t {
   NormalForce = 0,    //!< total normal force [N]
   VerticalForce = 1,  //!< vertical wheel load [N]
