@@ -13,11 +13,13 @@ namespace {
 
 struct DeepestPoint {
   double y = 0.0, h = 0.0, A = 0.0, B = 0.0;
+  double y_first = 0.0, y_last = 0.0;  // extent of the gap data [m]
 };
 
 DeepestPoint deepest_point(const GapProfile& gap) {
   const auto k = static_cast<std::size_t>(std::min_element(gap.h_m.begin(), gap.h_m.end()) - gap.h_m.begin());
-  return {gap.y_m[k], gap.h_m[k], gap.A_per_m[k], std::max(gap.B_per_m[k], gap.A_per_m[k] / 20.0)};
+  return {gap.y_m[k], gap.h_m[k], gap.A_per_m[k], std::max(gap.B_per_m[k], gap.A_per_m[k] / 20.0), gap.y_m.front(),
+          gap.y_m.back()};
 }
 
 NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point, double strip_width_m,
@@ -27,6 +29,8 @@ NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point
   solution.status = contact.status;
   solution.approach_m = point.h + contact.approach_m;
   if (contact.status == SolveStatus::Converged) {
+    if (point.y - contact.semi_axis_y_m < point.y_first || point.y + contact.semi_axis_y_m > point.y_last)
+      solution.status = SolveStatus::ZoneTruncated;  // the ellipse runs past the gap data, as MIM-1D reports it
     solution.normal_load_N = contact.normal_force_N;
     PatchSolution patch;
     patch.normal_force_N = contact.normal_force_N;
