@@ -189,13 +189,16 @@ TEST(MethodLadder, NonHertzianCaseAgainstContact) {
   auto pct = [](double value, double reference) { return 100.0 * (value / reference - 1.0); };
   for (const Expected& e : measured) {
     const std::string name = method_name(e.method);
+    // Hertz's ellipse (R_y 500 mm at the deepest point) is wider than the gap data (y up to 35 mm): it says so
+    // (zone-truncated, as MIM-1D would) and still reports its ellipse, whose errors are guarded here.
+    const SolveStatus expected = e.method == ContactMethod::Hertz ? SolveStatus::ZoneTruncated : SolveStatus::Converged;
     const NormalSolution p = solve_normal_contact(paper::nonhertz_gap(), options_for(e.method), Loading::approach(1e-3));
-    ASSERT_EQ(p.status, SolveStatus::Converged) << name;
+    ASSERT_EQ(p.status, expected) << name;
     EXPECT_NEAR(pct(total_area(p), area[0] * 1e-6), e.area_pct_P, kMargin_pct) << name;
     EXPECT_NEAR(pct(max_pressure(p), pmax[0] * 1e6), e.pmax_pct_P, kMargin_pct) << name;
     EXPECT_NEAR(pct(p.normal_load_N, force[0]), e.force_pct_P, kMargin_pct) << name;
     const NormalSolution f = solve_normal_contact(paper::nonhertz_gap(), options_for(e.method), Loading::normal_force(force[1]));
-    ASSERT_EQ(f.status, SolveStatus::Converged) << name;
+    ASSERT_EQ(f.status, expected) << name;
     EXPECT_NEAR(pct(total_area(f), area[1] * 1e-6), e.area_pct_F, kMargin_pct) << name;
     EXPECT_NEAR(pct(max_pressure(f), pmax[1] * 1e6), e.pmax_pct_F, kMargin_pct) << name;
     EXPECT_NEAR(f.normal_load_N / force[1], 1.0, 1e-9) << name;

@@ -164,6 +164,10 @@ HertzContact hertz_from_load(double A_per_m, double B_per_m, double E_star_Pa, d
   contact.max_pressure_Pa = 1.5 * normal_force_N / contact.area_m2;
   const double force_term = std::cbrt(3.0 * normal_force_N / (4.0 * E_star_Pa));
   contact.approach_m = c.r * force_term * force_term * std::cbrt(sum);
+  // Finite inputs can still over- or underflow (a gap scaled by 1e300): a status, never an infinite pressure.
+  if (!(contact.area_m2 > 0.0 && std::isfinite(contact.area_m2) && std::isfinite(contact.max_pressure_Pa) &&
+        std::isfinite(contact.approach_m) && contact.approach_m > 0.0))
+    return HertzContact{.status = SolveStatus::NumericalFailure};
   return contact;
 }
 

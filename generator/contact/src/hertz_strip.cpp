@@ -15,6 +15,7 @@ namespace {
 struct DeepestPoint {
   std::size_t k = 0;
   double y = 0.0, h = 0.0, A = 0.0, B = 0.0;
+  double y_first = 0.0, y_last = 0.0;  // extent of the gap data [m]
 };
 
 // Lateral curvature rule (README "Method ladder", hertz): the local B at the contact point when B >= A/20;
@@ -53,7 +54,8 @@ double lateral_curvature(const GapProfile& gap, const DeepestPoint& point, doubl
 
 DeepestPoint deepest_point(const GapProfile& gap) {
   const auto k = static_cast<std::size_t>(std::min_element(gap.h_m.begin(), gap.h_m.end()) - gap.h_m.begin());
-  return {k, gap.y_m[k], gap.h_m[k], gap.A_per_m[k], std::max(gap.B_per_m[k], gap.A_per_m[k] / kCurvatureRatioLimit)};
+  return {k,           gap.y_m[k], gap.h_m[k], gap.A_per_m[k], std::max(gap.B_per_m[k], gap.A_per_m[k] / kCurvatureRatioLimit),
+          gap.y_m.front(), gap.y_m.back()};
 }
 
 NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point, double strip_width_m,
@@ -63,6 +65,8 @@ NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point
   solution.status = contact.status;
   solution.approach_m = point.h + contact.approach_m;
   if (contact.status == SolveStatus::Converged) {
+    if (point.y - contact.semi_axis_y_m < point.y_first || point.y + contact.semi_axis_y_m > point.y_last)
+      solution.status = SolveStatus::ZoneTruncated;  // the ellipse runs past the gap data, as MIM-1D reports it
     solution.normal_load_N = contact.normal_force_N;
     PatchSolution patch;
     patch.normal_force_N = contact.normal_force_N;

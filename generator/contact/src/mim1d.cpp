@@ -35,6 +35,18 @@ constexpr double kNoContactGrowth = 2.0;
 constexpr double kNoContactNudge_m = 1e-9;
 // Warm start along dN/d(delta): a strip predicted non-positive keeps half its load.
 constexpr double kWarmStartShrink = 0.5;
+// Stall detection (track_progress): a step counts as progress when it lowers the best residual on the current set
+// by kProgressFactor; after kStallSteps steps without progress the step is scaled by kDampingFactor, at most down to
+// kMinimumDamping (chosen: a Newton 2-cycle is caught within 4 steps; 1/16 still converges in well under the
+// iteration limit). Full steps return below kFullStepLevel, where Newton is in its quadratic range.
+constexpr double kProgressFactor = 0.9;
+constexpr int kStallSteps = 4;
+constexpr double kDampingFactor = 0.5;
+constexpr double kMinimumDamping = 1.0 / 16.0;
+constexpr double kFullStepLevel = 1.0e-6;
+// FNV-1a 64-bit constants (Fowler, Noll, Vo), for the active-set signatures of the cycle detection.
+constexpr std::uint64_t kFnvOffset = 14695981039346656037ull;
+constexpr std::uint64_t kFnvPrime = 1099511628211ull;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -247,7 +259,8 @@ Mim1dSolver::SetCheck Mim1dSolver::check_active_set(const InnerState& state, dou
       state.last_change <= change_tolerance && residual <= options_.tolerance && force_converged;
   // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
   // and again at convergence.
-  const bool roughly_converged = state.last_change <= kAdmissionCheckLevel && residual <= kAdmissionCheckLevel;
+  const bool roughly_converged =
+      state.cycles == 0 && state.last_change <= kAdmissionCheckLevel && residual <= kAdmissionCheckLevel;
   if (!converged_on_set && !(roughly_converged && !state.set_checked)) return SetCheck::Iterate;
   return converged_on_set ? SetCheck::CheckAndFinish : SetCheck::Check;
 }
@@ -277,6 +290,14 @@ void Mim1dSolver::find_violators(double approach_m, double depth) {
     if (deepest != i && deepest != end - 1) check(deepest);
     i = end;
   }
+}
+
+bool Mim1dSolver::active_set_seen_before() {
+  std::uint64_t signature = kFnvOffset;  // FNV-1a over the strip indices
+  for (const std::size_t i : active_) signature = (signature ^ static_cast<std::uint64_t>(i)) * kFnvPrime;
+  if (std::find(checked_sets_.begin(), checked_sets_.end(), signature) != checked_sets_.end()) return true;
+  checked_sets_.push_back(signature);
+  return false;
 }
 
 bool Mim1dSolver::admit_violators(double approach_m, std::size_t& growth) {
@@ -320,8 +341,26 @@ void Mim1dSolver::fixed_point_step(const InnerState& state, double& next_approac
   }
 }
 
+void Mim1dSolver::track_progress(InnerState& state, double merit) {
+  if (merit <= kFullStepLevel) state.damping = 1.0;
+  if (merit < kProgressFactor * state.best_merit) {
+    state.best_merit = merit;
+    state.steps_without_progress = 0;
+    return;
+  }
+  if (++state.steps_without_progress < kStallSteps) return;
+  state.damping = std::max(kDampingFactor * state.damping, kMinimumDamping);
+  state.best_merit = merit;
+  state.steps_without_progress = 0;
+}
+
 bool Mim1dSolver::take_step(InnerState& state, double next_approach) {
   if (!next_loads_.allFinite() || !std::isfinite(next_approach)) return false;
+  if (state.damping < 1.0) {  // a damped step; strips the full step unloads still leave
+    for (Eigen::Index r = 0; r < next_loads_.size(); ++r)
+      if (next_loads_(r) > 0.0) next_loads_(r) = active_loads_(r) + state.damping * (next_loads_(r) - active_loads_(r));
+    next_approach = state.approach_m + state.damping * (next_approach - state.approach_m);
+  }
   const double largest = next_loads_.maxCoeff();
   if (!(largest > 0.0)) return false;
   state.approach_m = next_approach;
@@ -336,6 +375,7 @@ bool Mim1dSolver::take_step(InnerState& state, double next_approach) {
     std::erase_if(active_, [&](std::size_t i) { return load_[i] <= 0.0; });
     state.last_change = std::numeric_limits<double>::infinity();
     state.set_checked = false;
+    state.best_merit = std::numeric_limits<double>::infinity();
   } else {
     state.last_change = (next_loads_ - active_loads_).cwiseAbs().maxCoeff() / largest;
   }
@@ -359,13 +399,23 @@ Mim1dSolver::IterationOutcome Mim1dSolver::iterate(InnerState& state, InnerResul
   if (check != SetCheck::Iterate) {
     state.set_checked = true;
     find_violators(state.approach_m, depth);
+    if (!violators_.empty() && active_set_seen_before()) {
+      // The admissions cycle: back to a set already checked. Admit the violators alone from now on, and only
+      // once the set has fully converged (so that the check sees accurate displacements).
+      ++state.cycles;
+      state.growth = 0;
+    }
     if (admit_violators(state.approach_m, state.growth)) {
+      if (state.cycles > 0) state.growth = 0;
       state.set_checked = false;
       state.last_change = std::numeric_limits<double>::infinity();
+      state.best_merit = std::numeric_limits<double>::infinity();
       return IterationOutcome::Continue;
     }
     if (check == SetCheck::CheckAndFinish) return result.status = SolveStatus::Converged, IterationOutcome::Converged;
   }
+  track_progress(state, state.target_load_N ? std::max(result.residual, std::abs(force_mismatch) / *state.target_load_N)
+                                            : result.residual);
   double next_approach = state.approach_m;
   if (!newton || !newton_step(state, force_mismatch, next_approach)) fixed_point_step(state, next_approach);
   return take_step(state, next_approach) ? IterationOutcome::Continue : IterationOutcome::Failed;
@@ -381,6 +431,7 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
     return result;
   }
   (void)start_loads(approach_m, warm_start);
+  checked_sets_.clear();
   InnerState state{approach_m, target_load_N, h_min};
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     result.iterations = iteration;

@@ -194,10 +194,10 @@ void store_patch(tables::Table& table, const ProfileTable& rail, std::size_t k, 
   auto& p = table.patch;
   p.present[k] = 1;
   p.normal_force_N[k] = patch.normal_force_N;
-  // Force of the wheel on the rail along the contact-plane normal (into the rail): vertical N cos(delta), + down;
-  // lateral -N sin(delta), + to the field side (delta < 0 on the gauge side, so a flange force is > 0).
-  p.force_vertical_N[k] = patch.normal_force_N * std::cos(patch.plane_angle_rad);
-  p.force_lateral_N[k] = -patch.normal_force_N * std::sin(patch.plane_angle_rad);
+  // Force of the wheel on the rail, the solver's own components (those of its load balance): vertical + down,
+  // lateral + to the field side (a flange force is > 0).
+  p.force_vertical_N[k] = patch.force_vertical_N;
+  p.force_lateral_N[k] = patch.force_lateral_N;
   p.area_m2[k] = patch.area_m2;
   p.max_pressure_Pa[k] = patch.max_pressure_Pa;
   p.approach_m[k] = patch.approach_m;

@@ -202,6 +202,27 @@ double expected_approach(const SideGeometry& side, const GapMinimum& m, double d
   return h.status == SolveStatus::Converged ? h.approach_m : kFallbackApproach_m;
 }
 
+// Force of the wheel on the rail in the side frame [N]: lateral + towards the field side, vertical + down.
+struct ForceComponents {
+  double lateral_N = 0.0, vertical_N = 0.0;
+};
+
+// Direction of strip `strip`'s normal force (inclination from the vertical, < 0 on the gauge side) [rad]. In the
+// planar strip problem every strip pushes along the contact-plane normal.
+double strip_normal_angle(const PatchProblem& p, const StripSolution& /*strip*/) { return p.angle; }
+
+// One run of strips' force, summed strip by strip along each strip's normal: the components that the load balance
+// uses and that are reported (so that they add up to the prescribed vertical load).
+ForceComponents run_force(const PatchProblem& p, const PatchSolution& run) {
+  ForceComponents f;
+  for (const StripSolution& st : run.strips) {
+    const double angle = strip_normal_angle(p, st);
+    f.lateral_N -= st.load_N * std::sin(angle);
+    f.vertical_N += st.load_N * std::cos(angle);
+  }
+  return f;
+}
+
 // Why a patch's normal solve failed, in words.
 std::string patch_failure(NormalMethod method, const NormalSolution& solution, std::size_t slot) {
   const std::string at = " at patch " + std::to_string(slot + 1);
@@ -329,6 +350,7 @@ class WheelCase {
       result_.vertical_approach_m = value_;
       solve_patch_at(main, value_);
     } else {
+      // Vertical load: exact while every strip pushes along the plane normal (strip_normal_angle, run_force).
       const double force = load_ == LoadKind::VerticalForce ? value_ / main.c : value_;
       main.solution = options_.method == NormalMethod::Mim1d ? main.solver->solve_for_load(force)
                                                              : solve_other_rung(main, Loading::normal_force(force));
@@ -387,8 +409,10 @@ class WheelCase {
     for (std::size_t k = 0; k < ws_.used; ++k) {
       PatchProblem& p = ws_.pool[k];
       solve_patch_at(p, dz);
-      const double n = is_success(p.solution.status) ? p.solution.normal_load_N : 0.0;
-      sum += load_ == LoadKind::VerticalForce ? n * p.c : n;
+      if (!is_success(p.solution.status)) continue;
+      if (load_ != LoadKind::VerticalForce) sum += p.solution.normal_load_N;
+      else
+        for (const PatchSolution& run : p.solution.patches) sum += run_force(p, run).vertical_N;
     }
     return sum;
   }
@@ -430,10 +454,18 @@ class WheelCase {
       for (const PatchSolution& ps : p.solution.patches) add_patch(p, ps);
     }
     if (result_.patches.empty() && status == SolveStatus::Converged) {
+      // An approach too small to reach any strip centre (e.g. 1 nm) is no contact, as on a gap file.
+      if (all_patches_out_of_contact()) return SolveStatus::NoContact;
       detail_ = "no loaded strip in any patch";
       status = SolveStatus::NumericalFailure;
     }
     return status;
+  }
+
+  bool all_patches_out_of_contact() const {
+    for (std::size_t slot = 0; slot < ws_.used; ++slot)
+      if (ws_.pool[slot].solution.status != SolveStatus::NoContact) return false;
+    return true;
   }
 
   void add_patch(const PatchProblem& p, const PatchSolution& ps) {
@@ -460,7 +492,10 @@ class WheelCase {
     }
     out.contact_angle_rad = weighted_angle / ps.normal_force_N;
     result_.normal_force_N += out.normal_force_N;
-    result_.vertical_force_N += out.normal_force_N * std::cos(out.plane_angle_rad);
+    const ForceComponents force = run_force(p, ps);
+    out.force_lateral_N = force.lateral_N;
+    out.force_vertical_N = force.vertical_N;
+    result_.vertical_force_N += out.force_vertical_N;
     result_.patches.push_back(std::move(out));
   }
 

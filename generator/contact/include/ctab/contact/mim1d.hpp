@@ -69,6 +69,10 @@ class Mim1dSolver {
     double last_change = std::numeric_limits<double>::infinity();  // relative load change of the last step
     bool set_checked = false;     // Eq. 4 checked since the active set last changed
     std::size_t growth = 0;       // admission reach, in strips
+    int cycles = 0;               // times an active set came back to one already checked (cycle detection)
+    double best_merit = std::numeric_limits<double>::infinity();  // lowest residual on this set (stall detection)
+    int steps_without_progress = 0;
+    double damping = 1.0;         // fraction of the Newton/fixed-point step taken (1: full steps)
   };
   enum class SetCheck { Iterate, Check, CheckAndFinish };
   enum class IterationOutcome { Continue, Converged, Failed };
@@ -85,12 +89,17 @@ class Mim1dSolver {
   [[nodiscard]] SetCheck check_active_set(const InnerState& state, double residual, double force_mismatch);
   //! Unloaded strips that interpenetrate after deformation (Eq. 4) into violators_/penetrations_.
   void find_violators(double approach_m, double depth);
+  //! True when the active set was already checked in this solve (then the admissions cycle); records it.
+  bool active_set_seen_before();
   //! Admits the violators and their neighbours within `growth` (which then doubles); false if none.
   bool admit_violators(double approach_m, std::size_t& growth);
   //! Newton step (bordered with a target load) into next_loads_; false if a load would be non-positive.
   bool newton_step(const InnerState& state, double force_mismatch, double& next_approach);
   //! The paper's fixed-point step with the current lengths into next_loads_.
   void fixed_point_step(const InnerState& state, double& next_approach);
+  //! Stall detection: halves the step (down to a floor) when the residual has not improved for a few steps,
+  //! as when Newton alternates between two states; full steps again once close to the solution.
+  static void track_progress(InnerState& state, double merit);
   //! Accepts next_loads_ and drops non-positive strips (Figure 3); false on a non-finite or empty result.
   bool take_step(InnerState& state, double next_approach);
   [[nodiscard]] NormalSolution solve_for_load_nested(double normal_force_N, int& iterations);
@@ -120,6 +129,7 @@ class Mim1dSolver {
   std::vector<std::size_t> violators_;  // strips that interpenetrate after deformation (scratch)
   std::vector<double> penetrations_;    // their penetration [m] (scratch)
   std::vector<double> basin_scratch_;   // deepest h of each strip's basin (initial guess)
+  std::vector<std::uint64_t> checked_sets_;  // signatures of the active sets checked for Eq. 4 in this solve
   Eigen::MatrixXd influence_;       // G on the active set
   Eigen::MatrixXd jacobian_;        // dR/dN on the active set
   Eigen::VectorXd displacement_;    // u = G N on the active set

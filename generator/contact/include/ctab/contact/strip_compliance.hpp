@@ -11,7 +11,9 @@
 //! around it: B_eff,i = sum_j K_ij w_j B_j / sum_j K_ij w_j, with w_j = (delta_v - h_j)+ the virtual
 //! interpenetration at half the approach (the Hertz contact boundary; ~ the strip load for an elliptic patch)
 //! and K_ij a Gaussian of width l = lambda * W_i, W_i the half-width of the virtual-interpenetration run that
-//! holds strip i. Constant curvature is left unchanged (Hertz stays exact); a jump is spread over a fraction
+//! holds strip i (edges at the interpolated zero crossings; runs about to merge blend into one; the kernel cut
+//! to zero at 4 l; the local curvature with a small weight of its own), so that B_eff, and with it the
+//! force-approach curve, is continuous in the approach. Constant curvature is left unchanged (Hertz stays exact); a jump is spread over a fraction
 //! of the patch width; negative local curvature is absorbed by the contact's convex parts (a floor
 //! B_eff >= A/20, CONTACT's R_y <= 20 R_x rule, catches a patch that is concave as a whole).
 #include <cstdint>

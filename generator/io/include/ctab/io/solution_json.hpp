@@ -14,7 +14,8 @@ namespace ctab::gen {
 
 //! {"status", "dy_m", "roll_rad", "approach_m" (vertical, beyond first contact), "normal_load_N",
 //!  "vertical_load_N", "iterations", "solve_time_s", "patches": [{"zone", "area_m2", "normal_force_N",
-//!  "max_pressure_Pa", "approach_m" (normal), "contact_angle_rad", "y_rail_m", "y_wheel_m", "rolling_radius_m",
+//!  "force_lateral_N", "force_vertical_N" (on the rail, side frame; they sum to the vertical load),
+//!  "plane_angle_rad", "max_pressure_Pa", "approach_m" (normal), "contact_angle_rad", "y_rail_m", "y_wheel_m", "rolling_radius_m",
 //!  "y_cop_rail_m", "strips": [{"s_m", "y_rail_m", "half_length_m", "p0_Pa"}]}],
 //!  "near_misses": [{"y_wheel_m", "y_rail_m", "gap_m", "contact_angle_rad"}]}
 [[nodiscard]] nlohmann::json to_json(const WheelContact& contact);

@@ -36,6 +36,11 @@ struct PatchStrip {
 struct ContactPatch {
   std::string zone;                   //!< "tread" (S > -26 mm, S1002 section B and beyond) or "flange"
   double normal_force_N = 0.0;
+  //! Force of the wheel on the rail in the side frame, summed over the strips along each strip's normal (today
+  //! every strip of a patch has the contact-plane normal): lateral + towards the field side, vertical + down [N].
+  //! The load balance uses the same components, so sum force_vertical_N = prescribed vertical load.
+  double force_lateral_N = 0.0;
+  double force_vertical_N = 0.0;
   double area_m2 = 0.0;
   double max_pressure_Pa = 0.0;
   double approach_m = 0.0;            //!< normal approach of the patch [m]
@@ -57,7 +62,7 @@ struct WheelContact {
   double first_contact_z_m = 0.0;     //!< z_ws of first contact, relative to the nominal r_nom [m]
   GapMinimum rigid_contact;           //!< the rigid first-contact point (rolling radius for dr)
   double normal_force_N = 0.0;        //!< sum over patches
-  double vertical_force_N = 0.0;      //!< sum of N_k cos(delta_k)
+  double vertical_force_N = 0.0;      //!< sum of the patches' force_vertical_N
   int iterations = 0;                 //!< MIM-1D iterations, all patches and root-finding steps
   double solve_time_s = 0.0;
   std::vector<ContactPatch> patches;

@@ -1,0 +1,112 @@
+// Convergence everywhere (issue 8): the cases that ended in max-iterations or numerical-failure before the
+// continuous strip compliances, the active-set cycle detection and the damped steps, and a CI-sized sweep.
+// The full acceptance sweep (0.01 mm, -12..12 mm, ten loads, both modes, both profile sets, each loading kind)
+// is tests/bench/convergence_sweep.sh.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "ctab/contact/gap_profile.hpp"
+#include "ctab/contact/material.hpp"
+#include "ctab/contact/mim1d.hpp"
+#include "ctab/io/gap_csv.hpp"
+#include "ctab/sweep/table_generator.hpp"
+#include "test_support.hpp"
+
+using namespace ctab::gen;
+
+namespace {
+
+// A config on the Manchester files (or the built-ins) with the given mode and loading kind.
+std::string config_text(bool manchester, const char* mode, const char* load_line, const char* dy_axis) {
+  std::ostringstream text;
+  text << "[profiles]\n";
+  if (manchester)
+    text << "wheel = \"" << ctab::test::shared_path("profiles/MBench_S1002_v3.prw") << "\"\nrail = \""
+         << ctab::test::shared_path("profiles/MBench_UIC60_v3.prr") << "\"\ninclination = \"0\"\n";
+  text << "[solver]\nmode = \"" << mode << "\"\n[axes]\nlateral_displacement_m = " << dy_axis << "\n" << load_line << "\n";
+  return text.str();
+}
+
+SweepSetup setup_for(bool manchester, const char* mode, const char* load_line) {
+  return make_sweep_setup(parse_table_config(config_text(manchester, mode, load_line, "{ start = 0.0, stop = 1e-3, step = 1e-3 }"), "convergence.toml"));
+}
+
+// Status of the right wheel of one case (the listed failures are all on the right wheel).
+SolveStatus right_wheel(const SweepSetup& setup, double dy_m, double load) {
+  return solve_table_case(setup, dy_m, load).wheels[0].contact.status;
+}
+
+}  // namespace
+
+TEST(Convergence, ListedSingleWheelCasesManchesterVerticalLoad) {
+  const SweepSetup setup = setup_for(true, "wheel", "vertical_load_N = 78.5e3");
+  for (const double dy_mm : {5.02, 5.06, 5.07, 5.38})
+    EXPECT_EQ(right_wheel(setup, dy_mm * 1e-3, 78.5e3), SolveStatus::Converged) << "dy " << dy_mm << " mm";
+}
+
+TEST(Convergence, ListedWheelsetCasesManchesterVerticalLoad) {
+  const SweepSetup setup = setup_for(true, "wheelset", "vertical_load_N = 78.5e3");
+  for (const double dy_mm : {4.84, 4.90}) {
+    const CaseSolution solved = solve_table_case(setup, dy_mm * 1e-3, 78.5e3);
+    for (const CaseWheel& wheel : solved.wheels)
+      EXPECT_EQ(wheel.contact.status, SolveStatus::Converged) << "dy " << dy_mm << " mm: " << wheel.contact.detail;
+  }
+}
+
+TEST(Convergence, ListedLoadSweepCases) {
+  // From the 0.01 mm x (30...120 kN) sweep, single wheel, Manchester files, vertical load.
+  const SweepSetup setup = setup_for(true, "wheel", "vertical_load_N = 78.5e3");
+  EXPECT_EQ(right_wheel(setup, 1.06e-3, 50e3), SolveStatus::Converged);
+  EXPECT_EQ(right_wheel(setup, 2.06e-3, 120e3), SolveStatus::Converged);
+  EXPECT_EQ(right_wheel(setup, 5.58e-3, 80e3), SolveStatus::Converged);
+}
+
+TEST(Convergence, CasesThatCycledInTheBenchmarkSweep) {
+  // Active-set cycle at a prescribed approach (an interior strip admitted and dropped again, round after round).
+  const SweepSetup approach = setup_for(true, "wheel", "approach_m = 1e-4");
+  EXPECT_EQ(right_wheel(approach, 5.7e-3, 1.8e-4), SolveStatus::Converged);
+  EXPECT_EQ(right_wheel(approach, 6.5e-3, 1.6e-4), SolveStatus::Converged);
+  // Newton alternating between two states where the strip compliances jumped with the approach.
+  const SweepSetup normal = setup_for(true, "wheel", "normal_load_N = 78.5e3");
+  EXPECT_EQ(right_wheel(normal, 4.5e-3, 135.6e3), SolveStatus::Converged);
+  EXPECT_EQ(right_wheel(normal, 4.6e-3, 135.6e3), SolveStatus::Converged);
+}
+
+TEST(Convergence, LoadAxisExampleHasNoFailure) {
+  // examples/configs/load_axis.toml exited with status 4 (wheelset, built-in profiles, dy +-5.1 mm at 100 kN).
+  const auto table = generate_table(read_table_config(ctab::test::source_path("examples/configs/load_axis.toml")),
+                                    GeneratorInfo{});
+  for (const auto status : table.status) EXPECT_TRUE(ctab::tables::is_success(status));
+}
+
+TEST(Convergence, TinyApproachIsNoContactOnWheelRailAsOnAGapFile) {
+  for (const char* mode : {"wheel", "wheelset"}) {
+    const SweepSetup setup = setup_for(true, mode, "approach_m = 1e-9");
+    for (const double dy_mm : {0.0, 3.0, 6.5}) {
+      const CaseSolution solved = solve_table_case(setup, dy_mm * 1e-3, 1e-9);
+      for (const CaseWheel& wheel : solved.wheels)
+        EXPECT_EQ(wheel.contact.status, SolveStatus::NoContact) << mode << " dy " << dy_mm << ": " << wheel.contact.detail;
+    }
+  }
+  const GapProfile gap = read_gap_csv(ctab::test::source_path("examples/gaps/hertz_sphere_r40.csv"));
+  Mim1dSolver solver(gap, effective_modulus(kSteel, kSteel), Mim1dOptions{});
+  EXPECT_EQ(solver.solve_for_approach(1e-9).status, SolveStatus::NoContact);
+}
+
+TEST(Convergence, FineSweepThroughTheTwoPointRegion) {
+  // CI-sized part of the benchmark: 0.01 mm steps through the tread/flange-root region where the failures
+  // clustered, three loads, both modes, vertical load.
+  for (const char* mode : {"wheel", "wheelset"}) {
+    const auto table = generate_table(
+        parse_table_config(config_text(true, mode, "vertical_load_N = [30e3, 80e3, 135e3]",
+                                       "{ start = 4.5e-3, stop = 5.6e-3, step = 1e-5 }"),
+                           "fine.toml"),
+        GeneratorInfo{.threads = 2});
+    std::size_t failed = 0;
+    for (const auto status : table.status)
+      if (!ctab::tables::is_success(status)) ++failed;
+    EXPECT_EQ(failed, 0u) << mode;
+  }
+}

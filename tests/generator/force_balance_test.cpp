@@ -1,0 +1,98 @@
+// Forces that add up (issue 8): the load balance and the reported force components are the same numbers, so over
+// a wheel's patches sum force_vertical_N equals the prescribed vertical load to 1e-9 relative, case by case, over
+// whole tables written and read back, flange and two-point contact included.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "ctab/sweep/table_generator.hpp"
+#include "ctab/tables/table.hpp"
+#include "test_support.hpp"
+
+using namespace ctab::gen;
+using ctab::tables::Table;
+
+namespace {
+
+Table generate_and_read_back(const std::string& config, const std::string& name) {
+  GeneratorInfo info;
+  info.threads = 2;
+  const Table table = generate_table(parse_table_config(config, name), info);
+  const std::string path = ::testing::TempDir() + name + ".h5";
+  EXPECT_TRUE(ctab::tables::write_table(table, path).ok());
+  Table back;
+  const auto read = ctab::tables::read_table(path, back);
+  EXPECT_TRUE(read.ok()) << read.message;
+  return back;
+}
+
+// Largest relative miss of sum force_vertical_N against the vertical load over every case and wheel; every patch's
+// components must also be those of its normal force along the contact-plane normal.
+double worst_vertical_miss(const Table& table) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < table.n_dy(); ++i)
+    for (std::size_t j = 0; j < table.n_second(); ++j)
+      for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel) {
+        EXPECT_EQ(table.status[table.wheel_index(i, j, wheel)], ctab::tables::CaseStatus::Converged);
+        double sum = 0.0;
+        for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
+          const std::size_t k = table.patch_index(i, j, wheel, slot);
+          if (!table.patch.present[k]) continue;
+          sum += table.patch.force_vertical_N[k];
+          const double n = table.patch.normal_force_N[k], delta = table.patch.plane_angle_rad[k];
+          EXPECT_NEAR(table.patch.force_vertical_N[k], n * std::cos(delta), 1e-12 * n);
+          EXPECT_NEAR(table.patch.force_lateral_N[k], -n * std::sin(delta), 1e-12 * n);
+        }
+        worst = std::max(worst, std::abs(sum - table.second_axis[j]) / table.second_axis[j]);
+      }
+  return worst;
+}
+
+}  // namespace
+
+TEST(ForceBalance, ManchesterSingleWheelThroughFlangeRootAndFlank) {
+  // dy 4...8 mm: two-point contact, flange root (the issue's -3.5 % at 6.5 mm) and flank.
+  std::ostringstream config;
+  config << "[profiles]\nwheel = \"" << ctab::test::shared_path("profiles/MBench_S1002_v3.prw") << "\"\nrail = \""
+         << ctab::test::shared_path("profiles/MBench_UIC60_v3.prr") << "\"\ninclination = \"0\"\n"
+         << "[solver]\nmode = \"wheel\"\n[axes]\nlateral_displacement_m = { start = 4e-3, stop = 8e-3, step = 0.1e-3 }\n"
+         << "vertical_load_N = [50e3, 78.5e3, 120e3]\n[output]\nstrip_samples = 8\n";
+  const Table table = generate_and_read_back(config.str(), "force_balance_manchester");
+  const double miss = worst_vertical_miss(table);
+  std::printf("Manchester single wheel, dy 4..8 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
+  EXPECT_LE(miss, 1e-9);
+}
+
+TEST(ForceBalance, BuiltinWheelsetWholeRange) {
+  const Table table = generate_and_read_back(R"(
+[solver]
+mode = "wheelset"
+[axes]
+lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.25e-3 }
+vertical_load_N = [20e3, 150e3]
+[output]
+strip_samples = 8
+)", "force_balance_builtin");
+  const double miss = worst_vertical_miss(table);
+  std::printf("built-in wheelset, dy -12..12 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
+  EXPECT_LE(miss, 1e-9);
+}
+
+TEST(ForceBalance, WheelContactReportsTheBalancedComponents) {
+  // The solver's own result (what `ctab solve --json` prints): patches' force_vertical_N sum to the load.
+  std::ostringstream config;
+  config << "[profiles]\nwheel = \"" << ctab::test::shared_path("profiles/MBench_S1002_v3.prw") << "\"\nrail = \""
+         << ctab::test::shared_path("profiles/MBench_UIC60_v3.prr") << "\"\ninclination = \"0\"\n"
+         << "[solver]\nmode = \"wheel\"\n[axes]\nlateral_displacement_m = { start = 0.0, stop = 1e-3, step = 1e-3 }\nvertical_load_N = 78.5e3\n";
+  const SweepSetup setup = make_sweep_setup(parse_table_config(config.str(), "solve.toml"));
+  for (const double dy_mm : {0.0, 5.0, 5.5, 6.5, 7.5}) {
+    const WheelContact contact = solve_table_case(setup, dy_mm * 1e-3, 78.5e3).wheels[0].contact;
+    ASSERT_EQ(contact.status, SolveStatus::Converged) << contact.detail;
+    double vertical = 0.0;
+    for (const ContactPatch& p : contact.patches) vertical += p.force_vertical_N;
+    EXPECT_NEAR(vertical, 78.5e3, 1e-9 * 78.5e3) << "dy " << dy_mm;
+    EXPECT_NEAR(contact.vertical_force_N, 78.5e3, 1e-9 * 78.5e3) << "dy " << dy_mm;
+  }
+}
