@@ -68,7 +68,8 @@ std::string csv_field(const std::string& text) {
 }
 
 // index.csv, written to a temporary file and renamed (after every pair, so an interrupted batch leaves a true index).
-void write_index(const std::string& directory, const gen::BatchManifest& manifest, const std::vector<PairOutcome>& outcomes) {
+void write_index(const std::string& directory, const gen::BatchManifest& manifest,
+                 const std::vector<PairOutcome>& outcomes) {
   const fs::path path = fs::path(directory) / "index.csv";
   const std::string temporary = path.string() + ".tmp";
   {
@@ -80,9 +81,9 @@ void write_index(const std::string& directory, const gen::BatchManifest& manifes
       const PairOutcome& o = outcomes[i];
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%.3f", o.seconds);
-      out << csv_field(pair.table_name) << ',' << csv_field(pair.wheel) << ',' << csv_field(pair.rail) << ',' << o.status
-          << ',' << o.run << ',' << o.wheel_cases << ',' << o.failed_wheel_cases << ',' << o.wheel_sha256 << ','
-          << o.rail_sha256 << ',' << o.config_sha256 << ',' << seconds << ',' << csv_field(o.message) << '\n';
+      out << csv_field(pair.table_name) << ',' << csv_field(pair.wheel) << ',' << csv_field(pair.rail) << ','
+          << o.status << ',' << o.run << ',' << o.wheel_cases << ',' << o.failed_wheel_cases << ',' << o.wheel_sha256
+          << ',' << o.rail_sha256 << ',' << o.config_sha256 << ',' << seconds << ',' << csv_field(o.message) << '\n';
     }
     out.flush();
     if (!out) throw IoError(path.string() + ": cannot write the batch index");
@@ -109,7 +110,8 @@ bool is_complete(const std::string& path, const gen::TableConfig& config, const 
   auto has = [&](const char* name, const std::string& value) { return a.count(name) && a.at(name) == value; };
   if (!(has("config", config.text) && has("wheel_profile", config.wheel) && has("rail_profile", config.rail) &&
         has("generator_version", CTAB_VERSION) && has("git_commit", CTAB_GIT_COMMIT) &&
-        has("wheel_profile_sha256", samples_sha256(*setup.wheel)) && has("rail_profile_sha256", samples_sha256(*setup.rail))))
+        has("wheel_profile_sha256", samples_sha256(*setup.wheel)) &&
+        has("rail_profile_sha256", samples_sha256(*setup.rail))))
     return false;
   count_statuses(table, outcome);
   return true;
@@ -126,7 +128,8 @@ int run_batch(const BatchOptions& o) {
   info.threads = sweep_threads(o.threads);
   const std::string config_sha256 = sha256_of_text(manifest.base.text);
   // One progress bar over the batch: every pair counts its wheel cases, whether solved, resumed or failed.
-  const std::size_t per_pair = manifest.base.lateral_displacement_m.size() * manifest.base.load_values.size() * tables::kWheels;
+  const std::size_t per_pair =
+      manifest.base.lateral_displacement_m.size() * manifest.base.load_values.size() * tables::kWheels;
   const std::size_t total = per_pair * manifest.pairs.size();
   ProgressReporter reporter(o.quiet, "ctab batch");
   std::vector<PairOutcome> outcomes(manifest.pairs.size());
@@ -163,7 +166,8 @@ int run_batch(const BatchOptions& o) {
       outcome.message = e.what();
     }
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!outcome.message.empty()) std::fprintf(stderr, "ctab batch: %s: %s\n", pair.table_name.c_str(), outcome.message.c_str());
+    if (!outcome.message.empty())
+      std::fprintf(stderr, "ctab batch: %s: %s\n", pair.table_name.c_str(), outcome.message.c_str());
     reporter((i + 1) * per_pair, total);
     write_index(o.directory, manifest, outcomes);
   }
@@ -190,7 +194,8 @@ Command add_batch_command(CLI::App& parent) {
   app->add_option("manifest", o->manifest, "TOML manifest: config, wheels, rails, pairing, pairs")
       ->required()
       ->check(CLI::ExistingFile);
-  app->add_option("-o,--output", o->directory, "output directory (created if missing): tables and index.csv")->required();
+  app->add_option("-o,--output", o->directory, "output directory (created if missing): tables and index.csv")
+      ->required();
   add_threads_option(*app, o->threads);
   app->add_flag("--quiet", o->quiet, "no progress and no summary (failed pairs are still reported)");
   return {app, [o] { return run_batch(*o); }};

@@ -57,7 +57,8 @@ int run_export(const ExportOptions& o) {
 
 Command add_export_command(CLI::App& parent) {
   auto o = std::make_shared<ExportOptions>();
-  CLI::App* app = parent.add_subcommand("export", "Write a table as a lookup blob or a C header (targets without HDF5)");
+  CLI::App* app =
+      parent.add_subcommand("export", "Write a table as a lookup blob or a C header (targets without HDF5)");
   app->add_option("file", o->input, "table (.h5 or blob)")->required();
   app->add_option("--format", o->format, "blob (default) or c-header")->check(CLI::IsMember({"blob", "c-header"}));
   app->add_option("-o,--output", o->output, "output file")->required();
@@ -65,7 +66,8 @@ Command add_export_command(CLI::App& parent) {
   app->add_option("--name", o->name, "C identifier of the array (c-header; default ctab_table_blob)")
       ->check([](const std::string& s) {
         bool ok = !s.empty() && !(s[0] >= '0' && s[0] <= '9');
-        for (const char c : s) ok = ok && (c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'));
+        for (const char c : s)
+          ok = ok && (c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'));
         return ok ? std::string() : std::string("not a C identifier: ") + s;
       });
   return {app, [o] { return run_export(*o); }};

@@ -40,8 +40,8 @@ bool report_failed_cases(const std::map<int, std::size_t>& counts, const std::st
     total += count;
     if (status >= 0) continue;
     failed += count;
-    names += std::string(names.empty() ? "" : ", ") + tables::case_status_name(static_cast<tables::CaseStatus>(status)) + " " +
-             std::to_string(count);
+    names += std::string(names.empty() ? "" : ", ") +
+             tables::case_status_name(static_cast<tables::CaseStatus>(status)) + " " + std::to_string(count);
   }
   if (failed > 0)
     std::fprintf(stderr,
@@ -63,7 +63,8 @@ int run_shard(const gen::TableConfig& config, const gen::GeneratorInfo& info, ge
         ++counts[static_cast<int>(shard.status[shard.wheel_index(row, i_second, wheel)])];
   if (!o.quiet)
     std::printf("ctab generate: wrote shard %zu/%zu to %s: %zu of %zu lateral shifts (rows %s)\n", spec.index,
-                spec.count, o.output.c_str(), rows.size(), shard.n_dy(), shard.text_attributes.at("shard_rows").c_str());
+                spec.count, o.output.c_str(), rows.size(), shard.n_dy(),
+                shard.text_attributes.at("shard_rows").c_str());
   return report_failed_cases(counts, o.output) ? kExitCaseFailed : kExitSuccess;
 }
 
@@ -92,8 +93,10 @@ int run_generate(const GenerateOptions& o) {
     std::printf("ctab generate: %zu lateral shifts x %zu %s x 2 wheels in %.2f s on %d thread(s)%s\n", table.n_dy(),
                 table.n_second(), table.second_axis_name.c_str(), seconds, info.threads,
                 table.text_attributes.at("mirrored").rfind("true", 0) == 0 ? " (left wheel mirrored)" : "");
-    std::printf("wrote %s (%.1f kB); statuses:", o.output.c_str(), static_cast<double>(std::filesystem::file_size(o.output)) / 1024.0);
-    for (const auto& [status, count] : counts) std::printf(" %s %zu", tables::case_status_name(static_cast<tables::CaseStatus>(status)), count);
+    std::printf("wrote %s (%.1f kB); statuses:", o.output.c_str(),
+                static_cast<double>(std::filesystem::file_size(o.output)) / 1024.0);
+    for (const auto& [status, count] : counts)
+      std::printf(" %s %zu", tables::case_status_name(static_cast<tables::CaseStatus>(status)), count);
     std::printf("; %zu contact jumps\n", table.jumps.size());
   }
   return report_failed_cases(counts, o.output) ? kExitCaseFailed : kExitSuccess;
@@ -103,7 +106,8 @@ int run_generate(const GenerateOptions& o) {
 
 Command add_generate_command(CLI::App& parent) {
   auto o = std::make_shared<GenerateOptions>();
-  CLI::App* app = parent.add_subcommand("generate", "Generate a contact table (HDF5) from a TOML config or the embedded default");
+  CLI::App* app =
+      parent.add_subcommand("generate", "Generate a contact table (HDF5) from a TOML config or the embedded default");
   app->add_option("config", o->config_path,
                   "TOML config (default: `ctab config --print-default`: S1002 on UIC60 1:40, "
                   "wheelset, -12..12 mm, 78.5 kN)");

@@ -71,8 +71,9 @@ int run_geometry(GeometryOptions o) {
 
 Command add_geometry_command(CLI::App& parent) {
   auto o = std::make_shared<GeometryOptions>();
-  CLI::App* app = parent.add_subcommand(
-      "geometry", "Rigid contact geometry versus lateral shift (CSV), jumps, equivalent conicity");
+  CLI::App* app =
+      parent.add_subcommand("geometry",
+                            "Rigid contact geometry versus lateral shift (CSV), jumps, equivalent conicity");
   add_setup_options(*app, o->setup, kProfiles | kTrack | kMode);
   app->add_option("--dy-min", o->dy_min_m, "first lateral shift [m]")
       ->capture_default_str()

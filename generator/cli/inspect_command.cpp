@@ -31,22 +31,31 @@ nlohmann::ordered_json summary(const tables::Table& t) {
   for (const auto& [name, value] : t.number_attributes) out["provenance"][name] = value;
   for (const auto& [name, value] : t.integer_attributes) out["provenance"][name] = value;
   const auto& dy = t.lateral_displacement_m;
-  out["axes"]["lateral_displacement_m"] = {{"units", "m"}, {"count", dy.size()}, {"first", dy.front()},
-                                           {"last", dy.back()}, {"step", dy.size() > 1 ? dy[1] - dy[0] : 0.0}};
+  out["axes"]["lateral_displacement_m"] = {{"units", "m"},
+                                           {"count", dy.size()},
+                                           {"first", dy.front()},
+                                           {"last", dy.back()},
+                                           {"step", dy.size() > 1 ? dy[1] - dy[0] : 0.0}};
   out["axes"]["second"] = {{"name", t.second_axis_name}, {"units", t.second_axis_units}, {"values", t.second_axis}};
   out["n_slots"] = t.n_slots;
   out["strip_samples"] = t.strip_samples;
   std::map<int, std::size_t> counts;
   for (const auto s : t.status) ++counts[static_cast<int>(s)];
-  for (const auto& [status, count] : counts) out["status_counts"][tables::case_status_name(static_cast<tables::CaseStatus>(status))] = count;
+  for (const auto& [status, count] : counts)
+    out["status_counts"][tables::case_status_name(static_cast<tables::CaseStatus>(status))] = count;
   std::vector<std::size_t> per_slot(t.n_slots, 0);
   for (std::size_t k = 0; k < t.patch.present.size(); ++k) per_slot[k % t.n_slots] += t.patch.present[k];
   out["patches_per_slot"] = per_slot;
   out["jumps"] = nlohmann::ordered_json::array();
   for (const tables::Jump& j : t.jumps)
-    out["jumps"].push_back({{"kind", jump_kind_name(j.kind)}, {"wheel", j.wheel == 0 ? "right" : "left"}, {"slot", j.slot},
-                            {"i_second", j.i_second}, {"second", t.second_axis[j.i_second]}, {"i_dy", j.i_dy},
-                            {"dy_low_m", dy[j.i_dy]}, {"dy_high_m", dy[j.i_dy + 1]}});
+    out["jumps"].push_back({{"kind", jump_kind_name(j.kind)},
+                            {"wheel", j.wheel == 0 ? "right" : "left"},
+                            {"slot", j.slot},
+                            {"i_second", j.i_second},
+                            {"second", t.second_axis[j.i_second]},
+                            {"i_dy", j.i_dy},
+                            {"dy_low_m", dy[j.i_dy]},
+                            {"dy_high_m", dy[j.i_dy + 1]}});
   return out;
 }
 
@@ -54,10 +63,8 @@ void print_text(const std::string& path, const nlohmann::ordered_json& s) {
   std::printf("%s: ctab contact table, schema version %d (valid)\n", path.c_str(), tables::kSchemaVersion);
   for (const auto& [name, value] : s["provenance"].items()) {
     if (name == "config") continue;
-    if (value.is_string())
-      std::printf("  %-22s %s\n", name.c_str(), value.get<std::string>().c_str());
-    else
-      std::printf("  %-22s %.10g\n", name.c_str(), value.get<double>());
+    if (value.is_string()) std::printf("  %-22s %s\n", name.c_str(), value.get<std::string>().c_str());
+    else std::printf("  %-22s %.10g\n", name.c_str(), value.get<double>());
   }
   const auto& dy = s["axes"]["lateral_displacement_m"];
   std::printf("axes: lateral_displacement_m %zu values, %g .. %g m, step %g m\n", dy["count"].get<std::size_t>(),
@@ -68,7 +75,8 @@ void print_text(const std::string& path, const nlohmann::ordered_json& s) {
   std::printf("patch slots: %zu; strip profiles: %zu samples per patch\n", s["n_slots"].get<std::size_t>(),
               s["strip_samples"].get<std::size_t>());
   std::printf("status counts (case x wheel):");
-  for (const auto& [name, count] : s["status_counts"].items()) std::printf(" %s %zu", name.c_str(), count.get<std::size_t>());
+  for (const auto& [name, count] : s["status_counts"].items())
+    std::printf(" %s %zu", name.c_str(), count.get<std::size_t>());
   std::printf("\npatches present per slot:");
   for (std::size_t slot = 0; slot < s["patches_per_slot"].size(); ++slot)
     std::printf(" %zu: %zu", slot, s["patches_per_slot"][slot].get<std::size_t>());
@@ -84,10 +92,8 @@ int run_inspect(const std::string& path, bool json) {
   const tables::TableResult result = tables::read_table(path, t);
   if (!result.ok()) throw gen::Error(result.message);
   const nlohmann::ordered_json s = summary(t);
-  if (json)
-    std::cout << s.dump(1) << '\n';
-  else
-    print_text(path, s);
+  if (json) std::cout << s.dump(1) << '\n';
+  else print_text(path, s);
   return 0;
 }
 
@@ -96,9 +102,12 @@ int run_inspect(const std::string& path, bool json) {
 Command add_inspect_command(CLI::App& parent) {
   auto path = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
-  CLI::App* app = parent.add_subcommand("inspect", "Validate a contact table and print its schema, provenance, axes, statuses and jumps");
+  CLI::App* app =
+      parent.add_subcommand("inspect",
+                            "Validate a contact table and print its schema, provenance, axes, statuses and jumps");
   app->add_option("file", *path, "table (.h5)")->required();
-  app->add_flag("--json", *json, "print one JSON object (schema, provenance, axes, status counts, patches per slot, jumps)");
+  app->add_flag("--json", *json,
+                "print one JSON object (schema, provenance, axes, status counts, patches per slot, jumps)");
   return {app, [path, json] { return run_inspect(*path, *json); }};
 }
 

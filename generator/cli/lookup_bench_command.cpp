@@ -37,7 +37,9 @@ Points random_points(const lookup::Table& table, std::size_t n, unsigned seed) {
   return p;
 }
 
-double ns_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::nano>(b - a).count(); }
+double ns_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::nano>(b - a).count();
+}
 
 //! Median cost of reading the clock twice [ns], subtracted from every single-query time.
 double timer_overhead_ns() {
@@ -95,10 +97,11 @@ void report(const char* label, std::vector<Figures>& runs) {
     std::sort(v.begin(), v.end());
     return median ? v[v.size() / 2] : v.front();
   };
-  std::printf("  %-34s median %6.1f (%6.1f) ns  p99.99 %7.1f (%7.1f) ns  max %8.1f (%8.1f) ns  batch mean %6.1f (%6.1f) ns\n",
-              label, stat(&Figures::median_ns, false), stat(&Figures::median_ns, true), stat(&Figures::p9999_ns, false),
-              stat(&Figures::p9999_ns, true), stat(&Figures::max_ns, false), stat(&Figures::max_ns, true),
-              stat(&Figures::mean_batch_ns, false), stat(&Figures::mean_batch_ns, true));
+  std::printf(
+      "  %-34s median %6.1f (%6.1f) ns  p99.99 %7.1f (%7.1f) ns  max %8.1f (%8.1f) ns  batch mean %6.1f (%6.1f) ns\n",
+      label, stat(&Figures::median_ns, false), stat(&Figures::median_ns, true), stat(&Figures::p9999_ns, false),
+      stat(&Figures::p9999_ns, true), stat(&Figures::max_ns, false), stat(&Figures::max_ns, true),
+      stat(&Figures::mean_batch_ns, false), stat(&Figures::mean_batch_ns, true));
 }
 
 //! Largest difference of single-precision storage against double over the points: relative to each quantity's
@@ -175,7 +178,8 @@ Command add_bench_lookup_subcommand(CLI::App& bench) {
   auto path = std::make_shared<std::string>();
   auto queries = std::make_shared<std::size_t>(1000000);
   auto repetitions = std::make_shared<int>(5);
-  CLI::App* app = bench.add_subcommand("lookup", "Time per lookup query (median, p99.99, max), memory, single vs double");
+  CLI::App* app =
+      bench.add_subcommand("lookup", "Time per lookup query (median, p99.99, max), memory, single vs double");
   app->add_option("file", *path, "table (.h5 or blob)")->required();
   app->add_option("--queries", *queries, "random queries per repetition (default 1e6)");
   app->add_option("--repetitions", *repetitions, "repetitions (default 5)");

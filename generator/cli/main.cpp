@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   const std::vector<ctab::cli::Command> commands = {
       ctab::cli::add_generate_command(app),    ctab::cli::add_inspect_command(app),  ctab::cli::add_solve_command(app),
       ctab::cli::add_paper_cases_command(app), ctab::cli::add_geometry_command(app), ctab::cli::add_bench_command(app),
-      ctab::cli::add_config_command(app),     ctab::cli::add_export_command(app),   ctab::cli::add_query_command(app),
-      ctab::cli::add_merge_command(app),    ctab::cli::add_batch_command(app)};
+      ctab::cli::add_config_command(app),      ctab::cli::add_export_command(app),   ctab::cli::add_query_command(app),
+      ctab::cli::add_merge_command(app),       ctab::cli::add_batch_command(app)};
   return finish_standard_output(run(app, commands, argc, argv));
 }

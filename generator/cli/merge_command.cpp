@@ -55,8 +55,11 @@ int run_merge(const MergeOptions& o) {
 Command add_merge_command(CLI::App& parent) {
   auto o = std::make_shared<MergeOptions>();
   CLI::App* app = parent.add_subcommand("merge", "Join the shard files of `ctab generate --shard K/N` into one table");
-  app->add_option("shards", o->shards, "every shard file of one table (any order)")->required()->check(CLI::ExistingFile);
-  app->add_option("-o,--output", o->output, "output table; replaced only on success, and only if it is a table")->required();
+  app->add_option("shards", o->shards, "every shard file of one table (any order)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app->add_option("-o,--output", o->output, "output table; replaced only on success, and only if it is a table")
+      ->required();
   app->add_flag("--force", o->force, "replace OUTPUT even if it is not an HDF5 table");
   app->add_flag("--quiet", o->quiet, "no summary (errors and failed cases are still reported)");
   return {app, [o] { return run_merge(*o); }};

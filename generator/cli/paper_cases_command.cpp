@@ -23,7 +23,8 @@ void print_row(const char* label, const gen::NormalSolution& s, double force_ref
 int run_paper_cases() {
   const double E_star = gen::effective_modulus(gen::kSteel, gen::kSteel);
   const double width = 0.2e-3;
-  std::printf("MIM-1D on the theoretical cases of Qazi et al. (2022), section 3.1: steel, approach 1 mm, strips 0.2 mm\n");
+  std::printf(
+      "MIM-1D on the theoretical cases of Qazi et al. (2022), section 3.1: steel, approach 1 mm, strips 0.2 mm\n");
   std::printf("  %-26s %-10s %10s %8s %9s %8s %9s %8s %8s\n", "method", "status", "N [kN]", "err", "A [mm2]", "err",
               "pmax[MPa]", "err", "time[ms]");
 
@@ -46,11 +47,13 @@ int run_paper_cases() {
   const auto ref_force = gen::paper::kNonHertzContactForce_N, ref_area = gen::paper::kNonHertzContactArea_m2,
              ref_pmax = gen::paper::kNonHertzContactMaxPressure_Pa;
   gen::Mim1dSolver smoothed(body, E_star, options);
-  print_row("MIM-1D (smoothed curvature)", smoothed.solve_for_approach(gen::paper::kApproach_m), ref_force, ref_area, ref_pmax);
+  print_row("MIM-1D (smoothed curvature)", smoothed.solve_for_approach(gen::paper::kApproach_m), ref_force, ref_area,
+            ref_pmax);
   gen::Mim1dOptions pointwise_options = options;
   pointwise_options.curvature.treatment = gen::CurvatureTreatment::Pointwise;
   gen::Mim1dSolver pointwise(body, E_star, pointwise_options);
-  print_row("MIM-1D (pointwise, paper)", pointwise.solve_for_approach(gen::paper::kApproach_m), ref_force, ref_area, ref_pmax);
+  print_row("MIM-1D (pointwise, paper)", pointwise.solve_for_approach(gen::paper::kApproach_m), ref_force, ref_area,
+            ref_pmax);
   print_row("Hertz at first contact", gen::solve_hertz_for_approach(body, E_star, width, gen::paper::kApproach_m),
             ref_force, ref_area, ref_pmax);
   return 0;

@@ -25,10 +25,12 @@ struct QueryOptions {
   bool json = false, pchip = false, strips = false;
 };
 
-constexpr const char* kQuantityNames[CTAB_QUANTITIES] = {
-    "normal_force_N", "force_lateral_N", "force_vertical_N", "area_m2", "max_pressure_Pa", "approach_m",
-    "contact_angle_rad", "plane_angle_rad", "s_origin_y_rail_m", "s_origin_z_rail_m", "y_wheel_m", "y_rail_m",
-    "y_cop_rail_m", "rolling_radius_m", "semi_axis_a_m", "semi_axis_b_m", "s_min_m", "s_max_m"};
+constexpr const char* kQuantityNames[CTAB_QUANTITIES] = {"normal_force_N",    "force_lateral_N",  "force_vertical_N",
+                                                         "area_m2",           "max_pressure_Pa",  "approach_m",
+                                                         "contact_angle_rad", "plane_angle_rad",  "s_origin_y_rail_m",
+                                                         "s_origin_z_rail_m", "y_wheel_m",        "y_rail_m",
+                                                         "y_cop_rail_m",      "rolling_radius_m", "semi_axis_a_m",
+                                                         "semi_axis_b_m",     "s_min_m",          "s_max_m"};
 
 //! The second-axis value the options give for this table (its only value when it has one).
 double second_value(const lookup::Table& table, const QueryOptions& o) {
@@ -95,7 +97,8 @@ int run_query(const QueryOptions& o) {
 
 Command add_query_command(CLI::App& parent) {
   auto o = std::make_shared<QueryOptions>();
-  CLI::App* app = parent.add_subcommand("query", "Interpolate a table at one lateral shift (as the lookup library does)");
+  CLI::App* app =
+      parent.add_subcommand("query", "Interpolate a table at one lateral shift (as the lookup library does)");
   app->add_option("file", o->path, "table (.h5 or blob)")->required();
   app->add_option("--dy", o->dy_m, "lateral displacement [m]")->required();
   auto* load = app->add_option("--load", o->load_N, "vertical or normal load [N] (tables with a load axis)");

@@ -120,8 +120,7 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
   }
   if (groups & kSolver) {
     add(app.add_option_function<std::string>(
-               "--method",
-               [&c](const std::string& method) { c.method = *gen::parse_contact_method(method); },
+               "--method", [&c](const std::string& method) { c.method = *gen::parse_contact_method(method); },
                "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices())
             ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d", "bem2d"}))
             ->default_str(gen::method_name(c.method)));

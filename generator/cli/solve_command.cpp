@@ -57,12 +57,11 @@ int solve_gap(const SolveOptions& o) {
   if (o.setup.method != gen::NormalMethod::Hertz) (void)gen::make_strip_grid(gap, o.setup.strip_width_m);
   gen::MethodOptions options{o.setup.method, E_star, o.setup.strip_width_m, {}};
   apply_mim1d_extras(o, options.mim1d);
-  const gen::NormalSolution solution = gen::solve_normal_contact(
-      gap, options, o.approach_m ? gen::Loading::approach(*o.approach_m) : gen::Loading::normal_force(*o.load));
-  if (o.json)
-    std::cout << gen::to_json(solution).dump(1) << '\n';
-  else
-    print_summary(solution);
+  const gen::NormalSolution solution = gen::solve_normal_contact(gap, options,
+                                                                 o.approach_m ? gen::Loading::approach(*o.approach_m)
+                                                                              : gen::Loading::normal_force(*o.load));
+  if (o.json) std::cout << gen::to_json(solution).dump(1) << '\n';
+  else print_summary(solution);
   if (gen::is_success(solution.status)) return kExitSuccess;
   std::fprintf(stderr, "ctab solve: %s, %s %g: %s\n", o.gap_path.c_str(), o.approach_m ? "approach_m" : "load_N",
                o.approach_m ? *o.approach_m : *o.load, gen::status_name(solution.status));
@@ -74,10 +73,8 @@ gen::TableConfig wheelrail_config(const SolveOptions& o, double& load_value) {
   if (!o.config_path.empty()) {
     gen::TableConfig config = gen::read_table_config(o.config_path);
     const char* axis = gen::load_axis_name(config.load_kind);
-    if (o.load)
-      load_value = *o.load;
-    else if (config.load_values.size() == 1)
-      load_value = config.load_values.front();
+    if (o.load) load_value = *o.load;
+    else if (config.load_values.size() == 1) load_value = config.load_values.front();
     else
       throw gen::InputError("--load", 0,
                             o.config_path + " has a " + axis + " axis of " + std::to_string(config.load_values.size()) +
@@ -117,10 +114,8 @@ int solve_wheelrail(const SolveOptions& o) {
       throw gen::InputError("--dy", 0,
                             std::string("the ") + (wheel == 0 ? "right" : "left") + " wheel is off its rail at dy = " +
                                 millimetres(*o.dy_m) + " (no wheel point above the rail profile)");
-  if (o.json)
-    std::cout << to_json(config, solution).dump(1) << '\n';
-  else
-    print_summary(config, solution);
+  if (o.json) std::cout << to_json(config, solution).dump(1) << '\n';
+  else print_summary(config, solution);
   return report_failures(config, setup, solution) ? kExitCaseFailed : kExitSuccess;
 }
 

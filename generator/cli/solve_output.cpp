@@ -20,18 +20,16 @@ const char* status_text(const gen::CaseWheel& wheel) { return tables::case_statu
 
 void print_wheel(const char* name, const gen::CaseWheel& wheel) {
   const gen::WheelContact& c = wheel.contact;
-  std::printf(
-      "%s wheel: %s, vertical approach %.5f mm, normal load %.3f kN, vertical load %.3f kN, %d iterations, "
-      "%.3f ms\n",
-      name, status_text(wheel), c.vertical_approach_m * 1e3, c.normal_force_N * 1e-3, c.vertical_force_N * 1e-3,
-      c.iterations, c.solve_time_s * 1e3);
+  std::printf("%s wheel: %s, vertical approach %.5f mm, normal load %.3f kN, vertical load %.3f kN, %d iterations, "
+              "%.3f ms\n",
+              name, status_text(wheel), c.vertical_approach_m * 1e3, c.normal_force_N * 1e-3, c.vertical_force_N * 1e-3,
+              c.iterations, c.solve_time_s * 1e3);
   for (const auto& p : c.patches)
-    std::printf(
-        "  %s patch: rail y %.3f mm (centre of pressure %.3f), wheel y %.3f mm, angle %.3f deg, radius %.3f "
-        "mm, force %.3f kN, area %.3f mm^2, max pressure %.1f MPa, approach %.5f mm\n",
-        p.zone.c_str(), p.y_rail_m * 1e3, p.y_cop_rail_m * 1e3, p.y_wheel_m * 1e3,
-        p.contact_angle_rad * 180 / std::numbers::pi, p.rolling_radius_m * 1e3, p.normal_force_N * 1e-3,
-        p.area_m2 * 1e6, p.max_pressure_Pa * 1e-6, p.approach_m * 1e3);
+    std::printf("  %s patch: rail y %.3f mm (centre of pressure %.3f), wheel y %.3f mm, angle %.3f deg, radius %.3f "
+                "mm, force %.3f kN, area %.3f mm^2, max pressure %.1f MPa, approach %.5f mm\n",
+                p.zone.c_str(), p.y_rail_m * 1e3, p.y_cop_rail_m * 1e3, p.y_wheel_m * 1e3,
+                p.contact_angle_rad * 180 / std::numbers::pi, p.rolling_radius_m * 1e3, p.normal_force_N * 1e-3,
+                p.area_m2 * 1e6, p.max_pressure_Pa * 1e-6, p.approach_m * 1e3);
   for (const auto& m : c.near_misses)
     if (m.gap_m < 2e-3)
       std::printf("  near miss: rail y %.3f mm, wheel y %.3f mm, gap %.4f mm\n", m.rail_y_m * 1e3, m.wheel_s_m * 1e3,

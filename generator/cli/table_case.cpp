@@ -20,8 +20,9 @@ gen::SweepSetup make_case_setup(const gen::TableConfig& config) {
   try {
     return gen::make_sweep_setup(config);
   } catch (const gen::SweepSetupError& e) {
-    static const std::map<std::string, std::string> kOption = {
-        {"profiles.wheel", "--wheel"}, {"profiles.rail", "--rail"}, {"solver.strip_width_m", "--strip-width"}};
+    static const std::map<std::string, std::string> kOption = {{"profiles.wheel", "--wheel"},
+                                                               {"profiles.rail", "--rail"},
+                                                               {"solver.strip_width_m", "--strip-width"}};
     const auto option = kOption.find(e.key());
     if (config.source != kCommandLineSource || option == kOption.end()) throw;
     throw gen::InputError(option->second, 0, e.reason());
@@ -59,8 +60,7 @@ std::string failure_hint(const gen::SweepSetup& setup, std::size_t wheel, const 
     hint << "first contact at the end of the wheel profile (S = " << first.wheel_s_m * 1e3 << " mm)";
   else if (first.rail_y_m - r.y_min() < kNearEnd_m || r.y_max() - first.rail_y_m < kNearEnd_m)
     hint << "first contact at the end of the rail profile (y = " << first.rail_y_m * 1e3 << " mm)";
-  else
-    return roll_failure;
+  else return roll_failure;
   hint << ": the shift is beyond what the profiles cover";
   return roll_failure.empty() ? hint.str() : roll_failure + "; " + hint.str();
 }

@@ -11,7 +11,8 @@
 namespace ctab::cli {
 
 ProgressReporter::ProgressReporter(bool quiet, std::string label)
-    : quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0), label_(std::move(label)), start_(std::chrono::steady_clock::now()) {}
+    : quiet_(quiet), terminal_(::isatty(STDERR_FILENO) != 0), label_(std::move(label)),
+      start_(std::chrono::steady_clock::now()) {}
 
 void ProgressReporter::operator()(std::size_t done, std::size_t total) {
   if (quiet_ || total == 0) return;
@@ -20,8 +21,8 @@ void ProgressReporter::operator()(std::size_t done, std::size_t total) {
   const double left = rate > 0 ? static_cast<double>(total - done) / rate : 0.0;
   if (terminal_) {
     const int width = 40, filled = static_cast<int>(width * static_cast<double>(done) / static_cast<double>(total));
-    std::fprintf(stderr, "\r[%.*s%*s] %zu/%zu cases, %.0f/s, %.1f s left ", filled, "########################################",
-                 width - filled, "", done, total, rate, left);
+    std::fprintf(stderr, "\r[%.*s%*s] %zu/%zu cases, %.0f/s, %.1f s left ", filled,
+                 "########################################", width - filled, "", done, total, rate, left);
     if (done == total) std::fputc('\n', stderr);
   } else if (done == total || elapsed - last_line_ >= 5.0) {
     last_line_ = elapsed;

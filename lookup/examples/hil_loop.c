@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
     else path = argv[i];
   }
   if (path == NULL || !(seconds > 0.0)) {
-    fprintf(stderr, "usage: ctab_hil_loop TABLE.blob [--seconds S] [--amplitude M] [--frequency HZ] [--require-budget]\n");
+    fprintf(stderr,
+            "usage: ctab_hil_loop TABLE.blob [--seconds S] [--amplitude M] [--frequency HZ] [--require-budget]\n");
     return 2;
   }
   ctab_table* table = NULL;

@@ -142,7 +142,8 @@ LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool&
   Reader header(p + 8);
   const auto version = header.u(4), schema = header.u(4), value_bytes = header.u(4), header_bytes = header.u(4);
   const std::uint64_t payload_size = header.u(8), checksum = header.u(8);
-  if (version != kBlobVersion) return fail(CTAB_ERR_VERSION, "format version " + std::to_string(version) + ", expected 1");
+  if (version != kBlobVersion)
+    return fail(CTAB_ERR_VERSION, "format version " + std::to_string(version) + ", expected 1");
   if (schema != static_cast<std::uint64_t>(kSchemaVersion))
     return fail(CTAB_ERR_VERSION, "table schema " + std::to_string(schema) + ", expected 2");
   if ((value_bytes != 4 && value_bytes != 8) || header_bytes != kBlobHeaderBytes)

@@ -13,7 +13,8 @@ std::string blob_c_header(const std::vector<unsigned char>& blob, const std::str
   const std::string align = name + "_ALIGN";
   out += "#if defined(__cplusplus)\n#define " + align + " alignas(8)\n";
   out += "#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L\n#define " + align + " _Alignas(8)\n";
-  out += "#elif defined(__GNUC__)\n#define " + align + " __attribute__((aligned(8)))\n#else\n#define " + align + "\n#endif\n";
+  out += "#elif defined(__GNUC__)\n#define " + align + " __attribute__((aligned(8)))\n#else\n#define " + align +
+         "\n#endif\n";
   out += "static " + name + "_ALIGN const unsigned char " + name + "[" + std::to_string(blob.size()) + "] = {";
   char hex[8];
   for (std::size_t i = 0; i < blob.size(); ++i) {

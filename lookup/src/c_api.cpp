@@ -16,7 +16,8 @@ ctab_status ctab_table_open(const char* path, const ctab_open_options* options, 
   return make_handle(table, [&](Table& t) { return ctab::lookup::open_blob_file(path, load_options(options), t); });
 }
 
-ctab_status ctab_table_open_memory(const void* data, size_t size, const ctab_open_options* options, ctab_table** table) {
+ctab_status ctab_table_open_memory(const void* data, size_t size, const ctab_open_options* options,
+                                   ctab_table** table) {
   return make_handle(table, [&](Table& t) { return ctab::lookup::open_memory(data, size, load_options(options), t); });
 }
 

@@ -10,7 +10,8 @@
 
 // On x86-64 Linux with GCC the query is compiled twice, for baseline x86-64 and for x86-64-v3 (AVX2, FMA), and
 // the loader picks one once (ifunc); elsewhere it is compiled for the build's target only.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && !defined(CTAB_LOOKUP_NO_CLONES)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    !defined(CTAB_LOOKUP_NO_CLONES)
 #define CTAB_LOOKUP_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
 #define CTAB_LOOKUP_CLONES
@@ -86,9 +87,10 @@ void Table::prelookup(double dy_m, double second, ctab_location& out) const noex
 }
 
 template <typename T, bool kCubic>
-[[gnu::always_inline]] inline double Table::dy_slot(const T* __restrict lo, const T* __restrict hi, const T* __restrict slope_lo,
-                      const T* __restrict slope_hi, std::size_t slot, const DyBasis& basis,
-                      double* __restrict v) const noexcept {
+[[gnu::always_inline]] inline double Table::dy_slot(const T* __restrict lo, const T* __restrict hi,
+                                                    const T* __restrict slope_lo, const T* __restrict slope_hi,
+                                                    std::size_t slot, const DyBasis& basis,
+                                                    double* __restrict v) const noexcept {
   const auto rule = static_cast<std::uint8_t>(lo[off_rule_ + slot]);
   const double w_hi = detail::upper_weight(rule, basis.f, basis.step), w_lo = 1.0 - w_hi;
   const T* __restrict a = lo + slot * kQuantities;
@@ -103,13 +105,15 @@ template <typename T, bool kCubic>
       v[q] = a0 * static_cast<double>(a[q]) + a1 * static_cast<double>(b[q]) + b0 * static_cast<double>(da[q]) +
              b1 * static_cast<double>(db[q]);
   } else {
-    for (std::size_t q = 0; q < kQuantities; ++q) v[q] = w_lo * static_cast<double>(a[q]) + w_hi * static_cast<double>(b[q]);
+    for (std::size_t q = 0; q < kQuantities; ++q)
+      v[q] = w_lo * static_cast<double>(a[q]) + w_hi * static_cast<double>(b[q]);
   }
   return w_lo * static_cast<double>(lo[off_present_ + slot]) + w_hi * static_cast<double>(hi[off_present_ + slot]);
 }
 
 template <typename T, bool kCubic>
-[[gnu::always_inline]] inline void Table::wheelset(const ctab_location& where, std::uint32_t wheel, const DyBasis& basis, ctab_result& out) const noexcept {
+[[gnu::always_inline]] inline void Table::wheelset(const ctab_location& where, std::uint32_t wheel,
+                                                   const DyBasis& basis, ctab_result& out) const noexcept {
   const T* records_ = records<T>();
   const T* slopes = slope_records<T>();
   const std::size_t n_2 = second_.size();
@@ -136,7 +140,8 @@ template <typename T, bool kCubic>
 }
 
 template <typename T, bool kCubic>
-[[gnu::always_inline]] inline void Table::query_rows(const ctab_location& where, std::uint32_t wheel, ctab_result& out) const noexcept {
+[[gnu::always_inline]] inline void Table::query_rows(const ctab_location& where, std::uint32_t wheel,
+                                                     ctab_result& out) const noexcept {
   const T* records_ = records<T>();
   const T* slopes = slope_records<T>();
   // Hermite basis on the unit cell (slopes are per metre, hence the factor ddy).

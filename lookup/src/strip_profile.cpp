@@ -32,11 +32,13 @@ ctab_status Table::strip_profile(const ctab_location& where, std::int32_t wheel,
     const double w_hi = detail::upper_weight(rule, where.f_dy, step);
     weights[2 * r] = 1.0 - w_hi;
     weights[2 * r + 1] = w_hi;
-    presence[r] = (1.0 - w_hi) * field(cases[2 * r], off_present_ + s) + w_hi * field(cases[2 * r + 1], off_present_ + s);
+    presence[r] =
+        (1.0 - w_hi) * field(cases[2 * r], off_present_ + s) + w_hi * field(cases[2 * r + 1], off_present_ + s);
   }
   const double w1 = n_2 > 1 ? detail::row_weight(presence[0], presence[1], where.f_second) : 0.0;
   for (std::size_t k = 0; k < 4; ++k) weights[k] *= k < 2 ? 1.0 - w1 : w1;
-  if ((1.0 - w1) * presence[0] + w1 * presence[1] < 0.5 || strip_samples_ == 0) return where.status == CTAB_CLAMPED ? CTAB_CLAMPED : CTAB_OK;
+  if ((1.0 - w1) * presence[0] + w1 * presence[1] < 0.5 || strip_samples_ == 0)
+    return where.status == CTAB_CLAMPED ? CTAB_CLAMPED : CTAB_OK;
 
   const bool single = single_precision();
   const auto sample = [&](bool peak, std::size_t c, std::size_t i) {

@@ -8,8 +8,8 @@ namespace ctab::lookup {
 
 namespace {
 
-constexpr int kCaseStatusMin = -6;  // tables::kCaseStatusMin
-constexpr int kCaseStatusMax = 1;   // tables::kCaseStatusMax
+constexpr int kCaseStatusMin = -6;          // tables::kCaseStatusMin
+constexpr int kCaseStatusMax = 1;           // tables::kCaseStatusMax
 constexpr double kUniformTolerance = 1e-9;  // relative to the dy span
 
 LoadResult fail(ctab_status status, const std::string& what) { return {status, what}; }
@@ -67,7 +67,8 @@ LoadResult validate(const TableData& data) {
   const auto sized = [](const auto& v, std::size_t n) { return v.size() == n; };
   if (!sized(data.roll_rad, cases) || !sized(data.rolling_radius_difference_m, cases) ||
       !sized(data.case_status, cases * kWheels) || !sized(data.present, patches) ||
-      !sized(data.quantities, patches * kQuantities) || !sized(data.strip_half_length_m, patches * data.strip_samples) ||
+      !sized(data.quantities, patches * kQuantities) ||
+      !sized(data.strip_half_length_m, patches * data.strip_samples) ||
       !sized(data.strip_peak_pressure_Pa, patches * data.strip_samples))
     return fail(CTAB_ERR_SHAPE, "an array's size does not match the axes, slots and strip samples");
 
@@ -75,7 +76,8 @@ LoadResult validate(const TableData& data) {
       !all_finite(data.strip_half_length_m) || !all_finite(data.strip_peak_pressure_Pa))
     return fail(CTAB_ERR_CONTENT, "a tabulated value is not finite");
   for (const std::int8_t s : data.case_status)
-    if (s < kCaseStatusMin || s > kCaseStatusMax) return fail(CTAB_ERR_CONTENT, "unknown case status " + std::to_string(s));
+    if (s < kCaseStatusMin || s > kCaseStatusMax)
+      return fail(CTAB_ERR_CONTENT, "unknown case status " + std::to_string(s));
   for (const std::uint8_t p : data.present)
     if (p > 1) return fail(CTAB_ERR_CONTENT, "a presence flag is neither 0 nor 1");
   for (const Jump& j : data.jumps)

@@ -143,13 +143,21 @@ LoadResult Table::load(const TableData& data, const LoadOptions& options) {
 }
 
 template <>
-const double* Table::records<double>() const noexcept { return records_d_.data(); }
+const double* Table::records<double>() const noexcept {
+  return records_d_.data();
+}
 template <>
-const float* Table::records<float>() const noexcept { return records_f_.data(); }
+const float* Table::records<float>() const noexcept {
+  return records_f_.data();
+}
 template <>
-const double* Table::slope_records<double>() const noexcept { return slopes_d_.data(); }
+const double* Table::slope_records<double>() const noexcept {
+  return slopes_d_.data();
+}
 template <>
-const float* Table::slope_records<float>() const noexcept { return slopes_f_.data(); }
+const float* Table::slope_records<float>() const noexcept {
+  return slopes_f_.data();
+}
 
 double Table::field(std::size_t c, std::size_t offset) const noexcept {
   return single_precision() ? static_cast<double>(records<float>()[c * stride_ + offset])
@@ -158,9 +166,11 @@ double Table::field(std::size_t c, std::size_t offset) const noexcept {
 
 std::size_t Table::memory_bytes() const noexcept {
   return sizeof(*this) +
-         (records_d_.storage.size() + slopes_d_.storage.size() + second_.size() + strip_a_d_.size() + strip_p0_d_.size()) *
+         (records_d_.storage.size() + slopes_d_.storage.size() + second_.size() + strip_a_d_.size() +
+          strip_p0_d_.size()) *
              sizeof(double) +
-         (records_f_.storage.size() + slopes_f_.storage.size() + strip_a_f_.size() + strip_p0_f_.size()) * sizeof(float);
+         (records_f_.storage.size() + slopes_f_.storage.size() + strip_a_f_.size() + strip_p0_f_.size()) *
+             sizeof(float);
 }
 
 }  // namespace ctab::lookup

@@ -26,8 +26,9 @@ hid_t make_case_status_type() noexcept {
 
 hid_t make_jump_kind_type() noexcept {
   const hid_t type = H5Tenum_create(H5T_STD_U8LE);
-  const std::pair<const char*, JumpKind> kinds[] = {
-      {"appears", JumpKind::Appears}, {"disappears", JumpKind::Disappears}, {"moves", JumpKind::Moves}};
+  const std::pair<const char*, JumpKind> kinds[] = {{"appears", JumpKind::Appears},
+                                                    {"disappears", JumpKind::Disappears},
+                                                    {"moves", JumpKind::Moves}};
   for (const auto& [name, kind] : kinds) {
     const auto v = static_cast<std::uint8_t>(kind);
     H5Tenum_insert(type, name, &v);
@@ -79,7 +80,8 @@ hid_t make_utf8_type() noexcept {
 
 namespace {
 
-bool write_scalar_attribute(hid_t object, const char* name, hid_t file_type, hid_t memory_type, const void* value) noexcept {
+bool write_scalar_attribute(hid_t object, const char* name, hid_t file_type, hid_t memory_type,
+                            const void* value) noexcept {
   const Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   const Handle attribute(H5Acreate2(object, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   return attribute.valid() && H5Awrite(attribute.get(), memory_type, value) >= 0;

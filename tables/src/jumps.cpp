@@ -20,14 +20,10 @@ std::vector<Jump> detect_jumps(const Table& table) {
           const std::size_t low = table.patch_index(i_dy, i_second, wheel, slot);
           const std::size_t high = table.patch_index(i_dy + 1, i_second, wheel, slot);
           JumpKind kind{};
-          if (present[low] == 0 && present[high] != 0)
-            kind = JumpKind::Appears;
-          else if (present[low] != 0 && present[high] == 0)
-            kind = JumpKind::Disappears;
-          else if (present[low] != 0 && std::abs(y_rail[high] - y_rail[low]) > threshold_m)
-            kind = JumpKind::Moves;
-          else
-            continue;
+          if (present[low] == 0 && present[high] != 0) kind = JumpKind::Appears;
+          else if (present[low] != 0 && present[high] == 0) kind = JumpKind::Disappears;
+          else if (present[low] != 0 && std::abs(y_rail[high] - y_rail[low]) > threshold_m) kind = JumpKind::Moves;
+          else continue;
           jumps.push_back({static_cast<std::uint32_t>(i_second), static_cast<std::uint8_t>(wheel),
                            static_cast<std::uint8_t>(slot), static_cast<std::uint32_t>(i_dy), kind});
         }

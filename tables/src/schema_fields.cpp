@@ -48,7 +48,8 @@ std::vector<Field> schema_fields(Table& t) {
   return {
       f64("/axes/lateral_displacement_m", "m", "wheelset lateral shift dy, + moves the right flange towards its rail",
           Extent::DyAxis, t.lateral_displacement_m),
-      f64("/axes/second", "", "second axis (attribute name: its quantity; units: N or m)", Extent::SecondAxis, t.second_axis),
+      f64("/axes/second", "", "second axis (attribute name: its quantity; units: N or m)", Extent::SecondAxis,
+          t.second_axis),
       f64("/cases/roll_rad", "rad", "wheelset roll angle (0 in single-wheel mode)", Extent::PerCase, t.roll_rad),
       f64("/cases/rolling_radius_difference_m", "m", "r_right - r_left at the rigid contact points", Extent::PerCase,
           t.rolling_radius_difference_m),
@@ -75,7 +76,8 @@ std::vector<Field> schema_fields(Table& t) {
           p.y_wheel_m, kAny),
       f64("/patches/y_rail_m", "m", "contact point on the rail profile, origin at the top of the inclined head",
           Extent::PerSlot, p.y_rail_m, kAny),
-      f64("/patches/y_cop_rail_m", "m", "centre of pressure on the rail profile", Extent::PerSlot, p.y_cop_rail_m, kAny),
+      f64("/patches/y_cop_rail_m", "m", "centre of pressure on the rail profile", Extent::PerSlot, p.y_cop_rail_m,
+          kAny),
       f64("/patches/rolling_radius_m", "m", "wheel rolling radius at the contact point", Extent::PerSlot,
           p.rolling_radius_m, kPositive),
       f64("/patches/semi_axis_a_m", "m", "equivalent ellipse semi-axis, rolling direction (area and L/W kept)",
@@ -86,8 +88,9 @@ std::vector<Field> schema_fields(Table& t) {
       f64("/patches/s_max_m", "m", "upper end of the patch in its contact plane", Extent::PerSlot, p.s_max_m, kAny),
       f64("/patches/strip_half_length_m", "m", "strip half-length a(s) on strip_samples points over [s_min, s_max]",
           Extent::PerSample, p.strip_half_length_m, kNonNegative),
-      f64("/patches/strip_peak_pressure_Pa", "Pa", "strip peak pressure p0(s) on strip_samples points over [s_min, s_max]",
-          Extent::PerSample, p.strip_peak_pressure_Pa, kNonNegative),
+      f64("/patches/strip_peak_pressure_Pa", "Pa",
+          "strip peak pressure p0(s) on strip_samples points over [s_min, s_max]", Extent::PerSample,
+          p.strip_peak_pressure_Pa, kNonNegative),
   };
 }
 

@@ -15,8 +15,8 @@ namespace {
 
 using detail::Handle;
 
-constexpr hsize_t kMaxAxisLength = hsize_t{1} << 20;            // values per axis
-constexpr double kMaxTableBytes = 2.0 * 1024 * 1024 * 1024;     // memory of all arrays together [bytes]
+constexpr hsize_t kMaxAxisLength = hsize_t{1} << 20;         // values per axis
+constexpr double kMaxTableBytes = 2.0 * 1024 * 1024 * 1024;  // memory of all arrays together [bytes]
 
 struct RootAttributes {
   std::map<std::string, std::string> text;
@@ -59,11 +59,12 @@ TableResult check_schema_version(const RootAttributes& a, const std::string& pat
     if (f->second == 1.0) return fail(TableStatus::WrongSchemaVersion, schema_1);
     char value[32];
     std::snprintf(value, sizeof value, "%g", f->second);
-    return fail(TableStatus::InvalidContent,
-                path + ": attribute schema_version is the float " + value + ": it must be an integer (this build reads 2)");
+    return fail(TableStatus::InvalidContent, path + ": attribute schema_version is the float " + value +
+                                                 ": it must be an integer (this build reads 2)");
   }
   const auto i = a.integer.find("schema_version");
-  if (i == a.integer.end()) return fail(TableStatus::NotATable, path + ": no schema_version attribute: not a ctab table");
+  if (i == a.integer.end())
+    return fail(TableStatus::NotATable, path + ": no schema_version attribute: not a ctab table");
   if (i->second == 1) return fail(TableStatus::WrongSchemaVersion, schema_1);
   if (i->second != kSchemaVersion)
     return fail(TableStatus::WrongSchemaVersion, path + ": schema version " + std::to_string(i->second) +
@@ -79,7 +80,8 @@ TableResult integer_in_range(const RootAttributes& a, const std::string& path, c
     return fail(TableStatus::InvalidContent, path + ": root attribute " + name + " missing or not an integer");
   if (i->second < low || i->second > high)
     return fail(TableStatus::InvalidContent, path + ": root attribute " + name + " = " + std::to_string(i->second) +
-                                                 " is outside [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+                                                 " is outside [" + std::to_string(low) + ", " + std::to_string(high) +
+                                                 "]");
   out = static_cast<std::size_t>(i->second);
   return {};
 }
@@ -91,9 +93,13 @@ TableResult read_root(hid_t file, const std::string& path, Table& table) {
   if (!root.valid() || H5Aiterate2(root.get(), H5_INDEX_NAME, H5_ITER_NATIVE, &index, collect_attribute, &a) < 0)
     return fail(TableStatus::NotATable, path + ": cannot read the root attributes (truncated or damaged)");
   if (TableResult r = check_schema_version(a, path); !r.ok()) return r;
-  if (TableResult r = integer_in_range(a, path, "strip_samples", 2, static_cast<std::int64_t>(kMaxStripSamples), table.strip_samples); !r.ok())
+  if (TableResult r = integer_in_range(a, path, "strip_samples", 2, static_cast<std::int64_t>(kMaxStripSamples),
+                                       table.strip_samples);
+      !r.ok())
     return r;
-  if (TableResult r = integer_in_range(a, path, "n_slots", 1, static_cast<std::int64_t>(kMaxSlots), table.n_slots); !r.ok()) return r;
+  if (TableResult r = integer_in_range(a, path, "n_slots", 1, static_cast<std::int64_t>(kMaxSlots), table.n_slots);
+      !r.ok())
+    return r;
   table.second_axis_name = a.text["second_axis_name"];
   static const std::set<std::string> names = {"vertical_load_N", "normal_load_N", "approach_m"};
   if (names.count(table.second_axis_name) == 0)
@@ -111,7 +117,8 @@ TableResult read_root(hid_t file, const std::string& path, Table& table) {
 
 // Dimensions of a dataset, or a MissingDataset / NotATable result.
 TableResult dataset_dims(hid_t file, const std::string& path, const char* name, std::vector<hsize_t>& dims) {
-  if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return fail(TableStatus::MissingDataset, path + ": missing dataset " + name);
+  if (H5Lexists(file, name, H5P_DEFAULT) <= 0)
+    return fail(TableStatus::MissingDataset, path + ": missing dataset " + name);
   const Handle dataset(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
   if (!dataset.valid()) return fail(TableStatus::MissingDataset, path + ": missing dataset " + name);
   const Handle space(H5Dget_space(dataset.get()), H5Sclose);
@@ -139,33 +146,38 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
     if (TableResult r = dataset_dims(file, path, axes[i], dims); !r.ok()) return r;
     if (dims.size() != 1 || dims[0] == 0 || dims[0] > kMaxAxisLength)
       return fail(TableStatus::WrongShape, path + ": " + axes[i] + " has shape " + shape_text(dims) +
-                                               ": it must be 1-D with 1 to " + std::to_string(kMaxAxisLength) + " values");
+                                               ": it must be 1-D with 1 to " + std::to_string(kMaxAxisLength) +
+                                               " values");
     lengths[i] = dims[0];
   }
   double bytes = 0.0;
   const Handle status_type(detail::make_case_status_type(), H5Tclose);
   for (const detail::Field& f : detail::schema_fields(table)) {
-    const std::vector<hsize_t> want = detail::shape_of(f.extent, lengths[0], lengths[1], table.n_slots, table.strip_samples);
+    const std::vector<hsize_t> want =
+        detail::shape_of(f.extent, lengths[0], lengths[1], table.n_slots, table.strip_samples);
     std::vector<hsize_t> dims;
     if (TableResult r = dataset_dims(file, path, f.path, dims); !r.ok()) return r;
     if (dims != want)
-      return fail(TableStatus::WrongShape, path + ": dataset " + f.path + " has shape " + shape_text(dims) + ", expected " +
-                                               shape_text(want));
+      return fail(TableStatus::WrongShape,
+                  path + ": dataset " + f.path + " has shape " + shape_text(dims) + ", expected " + shape_text(want));
     double count = 1.0;
     for (const hsize_t d : dims) count *= static_cast<double>(d);
     bytes += count * (f.element == detail::Element::Float64 ? 8.0 : 1.0);
     const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
     const Handle type(H5Dget_type(dataset.get()), H5Tclose);
-    const bool type_ok = f.element == detail::Element::Float64    ? H5Tget_class(type.get()) == H5T_FLOAT
-                         : f.element == detail::Element::Presence ? H5Tget_class(type.get()) == H5T_INTEGER && H5Tget_size(type.get()) == 1
-                                                                  : detail::same_enum(type.get(), status_type.get());
+    const bool type_ok = f.element == detail::Element::Float64 ? H5Tget_class(type.get()) == H5T_FLOAT
+                         : f.element == detail::Element::Presence
+                             ? H5Tget_class(type.get()) == H5T_INTEGER && H5Tget_size(type.get()) == 1
+                             : detail::same_enum(type.get(), status_type.get());
     if (!type_ok)
-      return fail(TableStatus::InvalidContent, path + ": dataset " + f.path + " has the wrong element type (" +
-                                                   (f.element == detail::Element::Status ? "expected the CaseStatus enum" : "see tables/README.md") + ")");
+      return fail(TableStatus::InvalidContent,
+                  path + ": dataset " + f.path + " has the wrong element type (" +
+                      (f.element == detail::Element::Status ? "expected the CaseStatus enum" : "see tables/README.md") +
+                      ")");
   }
   if (bytes > kMaxTableBytes)
-    return fail(TableStatus::InvalidContent, path + ": the arrays would take " + std::to_string(bytes / 1e9) + " GB (limit " +
-                                                 std::to_string(kMaxTableBytes / 1e9) + " GB)");
+    return fail(TableStatus::InvalidContent, path + ": the arrays would take " + std::to_string(bytes / 1e9) +
+                                                 " GB (limit " + std::to_string(kMaxTableBytes / 1e9) + " GB)");
   table.lateral_displacement_m.assign(lengths[0], 0.0);
   table.second_axis.assign(lengths[1], 0.0);
   return {};
@@ -187,8 +199,8 @@ TableResult read_arrays(hid_t file, const std::string& path, Table& table) {
         return fail(TableStatus::InvalidContent, path + ": /axes/second has no units attribute");
       const std::string want = table.second_axis_name == "approach_m" ? "m" : "N";
       if (table.second_axis_units != want)
-        return fail(TableStatus::InvalidContent, path + ": /axes/second has units '" + table.second_axis_units + "', expected '" +
-                                                     want + "' for " + table.second_axis_name);
+        return fail(TableStatus::InvalidContent, path + ": /axes/second has units '" + table.second_axis_units +
+                                                     "', expected '" + want + "' for " + table.second_axis_name);
     }
   }
   return {};
@@ -199,14 +211,16 @@ TableResult read_jumps(hid_t file, const std::string& path, Table& table) {
   if (TableResult r = dataset_dims(file, path, detail::kJumpsPath, dims); !r.ok()) return r;
   const hsize_t most = static_cast<hsize_t>(table.cases() * kWheels * table.n_slots);
   if (dims.size() != 1 || dims[0] > most)
-    return fail(TableStatus::WrongShape, path + ": /jumps has shape " + shape_text(dims) + ": expected 1-D with at most " +
-                                             std::to_string(most) + " rows");
+    return fail(TableStatus::WrongShape, path + ": /jumps has shape " + shape_text(dims) +
+                                             ": expected 1-D with at most " + std::to_string(most) + " rows");
   const Handle dataset(H5Dopen2(file, detail::kJumpsPath, H5P_DEFAULT), H5Dclose);
   const Handle file_type(H5Dget_type(dataset.get()), H5Tclose);
   const Handle expected_kind(detail::make_jump_kind_type(), H5Tclose);
   const int kind_member = H5Tget_member_index(file_type.get(), "kind");
-  const Handle kind(kind_member >= 0 ? H5Tget_member_type(file_type.get(), static_cast<unsigned>(kind_member)) : -1, H5Tclose);
-  if (H5Tget_class(file_type.get()) != H5T_COMPOUND || !kind.valid() || !detail::same_enum(kind.get(), expected_kind.get()))
+  const Handle kind(kind_member >= 0 ? H5Tget_member_type(file_type.get(), static_cast<unsigned>(kind_member)) : -1,
+                    H5Tclose);
+  if (H5Tget_class(file_type.get()) != H5T_COMPOUND || !kind.valid() ||
+      !detail::same_enum(kind.get(), expected_kind.get()))
     return fail(TableStatus::InvalidContent, path + ": /jumps has the wrong element type (see tables/README.md)");
   std::vector<detail::JumpRecord> rows(dims[0]);
   const Handle memory(detail::make_jump_type(kind.get()), H5Tclose);  // kind read raw: unknown values arrive unchanged
@@ -217,7 +231,8 @@ TableResult read_jumps(hid_t file, const std::string& path, Table& table) {
     const detail::JumpRecord& r = rows[i];
     if (r.i_dy + 1 >= table.n_dy() || r.dy_low_m != table.lateral_displacement_m[r.i_dy] ||
         r.dy_high_m != table.lateral_displacement_m[r.i_dy + 1])
-      return fail(TableStatus::InvalidContent, path + ": /jumps[" + std::to_string(i) + "]: i_dy or dy_low_m/dy_high_m do not match the dy axis");
+      return fail(TableStatus::InvalidContent,
+                  path + ": /jumps[" + std::to_string(i) + "]: i_dy or dy_low_m/dy_high_m do not match the dy axis");
     table.jumps.push_back({r.i_second, r.wheel, r.slot, r.i_dy, static_cast<JumpKind>(r.kind)});
   }
   return {};
@@ -242,7 +257,8 @@ TableResult read_table(const std::string& path, Table& table) {
   } else {
     return fail(TableStatus::CannotOpen, path + ": cannot open table file");
   }
-  if (H5Fis_hdf5(path.c_str()) <= 0) return fail(TableStatus::NotATable, path + ": not an HDF5 contact table (or truncated)");
+  if (H5Fis_hdf5(path.c_str()) <= 0)
+    return fail(TableStatus::NotATable, path + ": not an HDF5 contact table (or truncated)");
   const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) return fail(TableStatus::NotATable, path + ": cannot be opened as HDF5 (truncated or damaged)");
   TableResult result = read_file(file.get(), path, table);

@@ -18,7 +18,8 @@ std::string number_text(double value) {
 
 TableResult invalid(const std::string& path, const Field& field, const std::vector<hsize_t>& shape, std::size_t flat,
                     const std::string& what) {
-  return {TableStatus::InvalidContent, path + ": " + field.path + "[" + index_text(field.extent, shape, flat) + "]: " + what};
+  return {TableStatus::InvalidContent,
+          path + ": " + field.path + "[" + index_text(field.extent, shape, flat) + "]: " + what};
 }
 
 TableResult check_axes(const Table& t, const std::string& path) {
@@ -31,8 +32,8 @@ TableResult check_axes(const Table& t, const std::string& path) {
   }
   for (std::size_t i = 0; i < t.second_axis.size(); ++i)
     if (!(t.second_axis[i] > 0.0) || (i > 0 && !(t.second_axis[i] > t.second_axis[i - 1])))
-      return {TableStatus::InvalidContent, path + ": /axes/second[" + std::to_string(i) +
-                                               "]: values must be positive and strictly increasing"};
+      return {TableStatus::InvalidContent,
+              path + ": /axes/second[" + std::to_string(i) + "]: values must be positive and strictly increasing"};
   return {};
 }
 
@@ -52,7 +53,8 @@ TableResult check_field(const Field& f, const Table& t, const std::string& path)
   }
   if (f.element == Element::Presence) {
     for (std::size_t i = 0; i < f.size(); ++i)
-      if ((*f.bytes)[i] > 1) return invalid(path, f, shape, i, "presence " + std::to_string((*f.bytes)[i]) + " (must be 0 or 1)");
+      if ((*f.bytes)[i] > 1)
+        return invalid(path, f, shape, i, "presence " + std::to_string((*f.bytes)[i]) + " (must be 0 or 1)");
     return {};
   }
   const std::vector<double>& v = *f.doubles;
@@ -73,10 +75,11 @@ TableResult check_failed_cases(const Table& t, const std::string& path) {
     if (is_success(t.status[w])) continue;
     for (std::size_t slot = 0; slot < t.n_slots; ++slot)
       if (t.patch.present[w * t.n_slots + slot] != 0)
-        return {TableStatus::InvalidContent, path + ": /patches/present[" +
-                                                 index_text(Extent::PerSlot, shape_of(Extent::PerSlot, t.n_dy(), t.n_second(), t.n_slots, 1),
-                                                            w * t.n_slots + slot) +
-                                                 "]: a patch in a failed case (" + case_status_name(t.status[w]) + ")"};
+        return {TableStatus::InvalidContent,
+                path + ": /patches/present[" +
+                    index_text(Extent::PerSlot, shape_of(Extent::PerSlot, t.n_dy(), t.n_second(), t.n_slots, 1),
+                               w * t.n_slots + slot) +
+                    "]: a patch in a failed case (" + case_status_name(t.status[w]) + ")"};
   }
   return {};
 }

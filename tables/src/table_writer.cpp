@@ -36,14 +36,15 @@ Handle dataset_properties(const std::vector<hsize_t>& shape, hsize_t count) {
   return dcpl;
 }
 
-bool write_dataset(hid_t file, const char* path, const std::vector<hsize_t>& shape, hid_t file_type,
-                   hid_t memory_type, const void* data, const char* units, const char* description) {
+bool write_dataset(hid_t file, const char* path, const std::vector<hsize_t>& shape, hid_t file_type, hid_t memory_type,
+                   const void* data, const char* units, const char* description) {
   hsize_t count = 1;
   for (const hsize_t d : shape) count *= d;
   const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose);
   const Handle dcpl = dataset_properties(shape, count);
   const Handle dataset(H5Dcreate2(file, path, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), H5Dclose);
-  return dataset.valid() && (count == 0 || H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0) &&
+  return dataset.valid() &&
+         (count == 0 || H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0) &&
          detail::write_text_attribute(dataset.get(), "units", units) &&
          detail::write_text_attribute(dataset.get(), "description", description);
 }
@@ -62,8 +63,8 @@ TableResult write_arrays(hid_t file, const Table& const_table, const std::string
     if (f.element == detail::Element::Presence) file_type = H5T_STD_U8LE, memory_type = H5T_NATIVE_UINT8;
     if (f.element == detail::Element::Status) file_type = status_file.get(), memory_type = status_memory.get();
     const bool second = f.extent == detail::Extent::SecondAxis;
-    if (!write_dataset(file, f.path, shape, file_type, memory_type, f.data(), second ? table.second_axis_units.c_str() : f.units,
-                       f.description))
+    if (!write_dataset(file, f.path, shape, file_type, memory_type, f.data(),
+                       second ? table.second_axis_units.c_str() : f.units, f.description))
       return fail(path + ": cannot write " + f.path);
     if (second) {
       const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
@@ -86,19 +87,23 @@ TableResult write_jumps(hid_t file, const Table& table, const std::string& path)
   const Handle memory(detail::make_jump_type(kind.get()), H5Tclose);
   const Handle file_type(detail::make_jump_file_type(), H5Tclose);
   if (!write_dataset(file, detail::kJumpsPath, {static_cast<hsize_t>(rows.size())}, file_type.get(), memory.get(),
-                     rows.data(), "-", "contact jumps: a slot appears, disappears or moves between dy_low_m and dy_high_m"))
+                     rows.data(), "-",
+                     "contact jumps: a slot appears, disappears or moves between dy_low_m and dy_high_m"))
     return fail(path + ": cannot write /jumps");
   return {};
 }
 
 TableResult write_root_attributes(hid_t file, const Table& table, const std::string& path) {
   const Handle root(H5Gopen2(file, "/", H5P_DEFAULT), H5Gclose);
-  bool ok = detail::write_integer_attribute(root.get(), "schema_version", kSchemaVersion) &&
-            detail::write_integer_attribute(root.get(), "strip_samples", static_cast<std::int64_t>(table.strip_samples)) &&
-            detail::write_integer_attribute(root.get(), "n_slots", static_cast<std::int64_t>(table.n_slots)) &&
-            detail::write_text_attribute(root.get(), "second_axis_name", table.second_axis_name);
-  for (const auto& [name, value] : table.text_attributes) ok = ok && detail::write_text_attribute(root.get(), name.c_str(), value);
-  for (const auto& [name, value] : table.number_attributes) ok = ok && detail::write_number_attribute(root.get(), name.c_str(), value);
+  bool ok =
+      detail::write_integer_attribute(root.get(), "schema_version", kSchemaVersion) &&
+      detail::write_integer_attribute(root.get(), "strip_samples", static_cast<std::int64_t>(table.strip_samples)) &&
+      detail::write_integer_attribute(root.get(), "n_slots", static_cast<std::int64_t>(table.n_slots)) &&
+      detail::write_text_attribute(root.get(), "second_axis_name", table.second_axis_name);
+  for (const auto& [name, value] : table.text_attributes)
+    ok = ok && detail::write_text_attribute(root.get(), name.c_str(), value);
+  for (const auto& [name, value] : table.number_attributes)
+    ok = ok && detail::write_number_attribute(root.get(), name.c_str(), value);
   for (const auto& [name, value] : table.integer_attributes)
     ok = ok && detail::write_integer_attribute(root.get(), name.c_str(), value);
   return ok ? TableResult{} : fail(path + ": cannot write the root attributes (a provenance name used twice?)");

@@ -44,8 +44,18 @@ double minimum(const std::vector<double>& v) { return *std::min_element(v.begin(
 
 }  // namespace
 
-BENCHMARK(BM_Bem2dHertzPrescribedLoad)->Arg(200)->Arg(100)->Arg(80)->Arg(40)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_Bem2dHertzPrescribedLoad)
+    ->Arg(200)
+    ->Arg(100)
+    ->Arg(80)
+    ->Arg(40)
+    ->Unit(benchmark::kMillisecond)
     ->ComputeStatistics("min", minimum);
-BENCHMARK(BM_Bem2dFftProduct)->Arg(64)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_Bem2dFftProduct)
+    ->Arg(64)
+    ->Arg(128)
+    ->Arg(256)
+    ->Arg(512)
+    ->Unit(benchmark::kMillisecond)
     ->ComputeStatistics("min", minimum);
 BENCHMARK_MAIN();

@@ -32,7 +32,8 @@ Table load(const LoadOptions& options) {
 std::vector<double> random_dy(const Table& table, bool hot = false) {
   std::mt19937_64 random(42);
   const double centre = 0.5 * (table.dy_min() + table.dy_max());
-  std::uniform_real_distribution<double> uniform(hot ? centre - 0.5e-3 : table.dy_min(), hot ? centre + 0.5e-3 : table.dy_max());
+  std::uniform_real_distribution<double> uniform(hot ? centre - 0.5e-3 : table.dy_min(),
+                                                 hot ? centre + 0.5e-3 : table.dy_max());
   std::vector<double> dy(1 << 16);
   for (double& v : dy) v = uniform(random);
   return dy;

@@ -23,13 +23,14 @@ void BM_MethodLadder(benchmark::State& state) {
   options.strip_width_m = 0.2e-3;
   const auto scene = static_cast<Scene>(state.range(1));
   const GapProfile gap = scene == kSphereForce ? paper::hertz_sphere_gap() : paper::nonhertz_gap();
-  const Loading loading = scene == kSphereForce       ? Loading::normal_force(963e3)
+  const Loading loading = scene == kSphereForce        ? Loading::normal_force(963e3)
                           : scene == kNonHertzApproach ? Loading::approach(1e-3)
                                                        : Loading::normal_force(2645e3);
   (void)solve_normal_contact(gap, options, loading);  // process-wide tables (Hertz coefficients, strip kernel)
   for (auto _ : state) benchmark::DoNotOptimize(solve_normal_contact(gap, options, loading).normal_load_N);
-  state.SetLabel(std::string(method_name(options.method)) +
-                 (scene == kSphereForce ? " sphere F" : scene == kNonHertzApproach ? " nonhertz delta" : " nonhertz F"));
+  state.SetLabel(std::string(method_name(options.method)) + (scene == kSphereForce        ? " sphere F"
+                                                             : scene == kNonHertzApproach ? " nonhertz delta"
+                                                                                          : " nonhertz F"));
 }
 
 double minimum(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }

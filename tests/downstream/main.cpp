@@ -1,5 +1,5 @@
-// Uses the installed ctab: headers, the static ctab::tables and its HDF5 link, ctab::lookup (and the generator libraries when
-// CTAB_DOWNSTREAM_WITH_GENERATOR). Exit code 0 when every call behaves as documented.
+// Uses the installed ctab: headers, the static ctab::tables and its HDF5 link, ctab::lookup (and the generator
+// libraries when CTAB_DOWNSTREAM_WITH_GENERATOR). Exit code 0 when every call behaves as documented.
 #include <iostream>
 #include <string>
 
@@ -13,8 +13,8 @@ int main() {
   const std::string path = "/nonexistent/ctab_downstream.h5";
   ctab::tables::Table table;
   const ctab::tables::TableResult result = ctab::tables::read_table(path, table);
-  std::cout << "ctab tables schema " << ctab::tables::kSchemaVersion << "; reading " << path << ": "
-            << result.message << "\n";
+  std::cout << "ctab tables schema " << ctab::tables::kSchemaVersion << "; reading " << path << ": " << result.message
+            << "\n";
   if (result.ok() || result.message.find(path) == std::string::npos) {
     std::cerr << "expected a failed read naming " << path << "\n";
     return 1;

@@ -24,14 +24,13 @@ TEST(AxisRange, RejectsEveryBadRangeWithoutAllocating) {
     AxisProblem problem;
     const char* part;
   };
-  for (const Bad& b : {Bad{nan, 1, 1, AxisProblem::NonFinite, "start"}, Bad{0, inf, 1, AxisProblem::NonFinite, "stop"},
-                       Bad{0, 1, nan, AxisProblem::NonFinite, "step"}, Bad{0, 1, 0, AxisProblem::NonPositiveStep, "step"},
-                       Bad{0, 1, -1, AxisProblem::NonPositiveStep, "step"},
-                       Bad{1, 0, 0.1, AxisProblem::StopBelowStart, "stop"},
-                       Bad{-12e-3, 12e-3, 1e-21, AxisProblem::TooManyPoints, ""},
-                       Bad{-1e308, 1e308, 1.0, AxisProblem::TooManyPoints, ""},
-                       Bad{0.0, 1e-3, 1e-15, AxisProblem::TooManyPoints, ""},
-                       Bad{1.0, 1.0 + 1e-15, 1e-16, AxisProblem::StepTooSmall, "step"}}) {
+  for (const Bad& b :
+       {Bad{nan, 1, 1, AxisProblem::NonFinite, "start"}, Bad{0, inf, 1, AxisProblem::NonFinite, "stop"},
+        Bad{0, 1, nan, AxisProblem::NonFinite, "step"}, Bad{0, 1, 0, AxisProblem::NonPositiveStep, "step"},
+        Bad{0, 1, -1, AxisProblem::NonPositiveStep, "step"}, Bad{1, 0, 0.1, AxisProblem::StopBelowStart, "stop"},
+        Bad{-12e-3, 12e-3, 1e-21, AxisProblem::TooManyPoints, ""},
+        Bad{-1e308, 1e308, 1.0, AxisProblem::TooManyPoints, ""}, Bad{0.0, 1e-3, 1e-15, AxisProblem::TooManyPoints, ""},
+        Bad{1.0, 1.0 + 1e-15, 1e-16, AxisProblem::StepTooSmall, "step"}}) {
     const UniformAxis axis = make_uniform_axis(b.start, b.stop, b.step);
     EXPECT_EQ(axis.problem, b.problem) << b.start << " " << b.stop << " " << b.step;
     EXPECT_EQ(axis.part, b.part);

@@ -30,9 +30,7 @@ Bem2dGrid square_grid(double size_m) {
 
 double relative(double value, double reference) { return value / reference - 1.0; }
 
-bool have_reference() {
-  return std::filesystem::exists(ctab::test::shared_path("reference/contact/README.md"));
-}
+bool have_reference() { return std::filesystem::exists(ctab::test::shared_path("reference/contact/README.md")); }
 
 // One row of a CONTACT summary file by its `case` name, as column -> number.
 std::map<std::string, double> reference_row(const std::string& file, const std::string& case_name) {
@@ -75,8 +73,9 @@ TEST(Bem2dFineMesh, SphereWithinHertzTolerances) {
 // Ellipsoid B/A = 10 (a/b = 4.5), 160 elements per semi-axis (dx = a/160, dy = b/160).
 TEST(Bem2dFineMesh, EllipsoidWithinHertzTolerances) {
   const double A = 2.5, B = 25.0, approach = 0.05e-3;
-  const GapProfile gap = sample_gap(-5e-3, 5e-3, 0.01e-3, [&](double y) { return B * y * y; }, [&](double) { return A; },
-                                    [&](double) { return B; }, "ellipsoid");
+  const GapProfile gap = sample_gap(
+      -5e-3, 5e-3, 0.01e-3, [&](double y) { return B * y * y; }, [&](double) { return A; }, [&](double) { return B; },
+      "ellipsoid");
   const HertzContact h = hertz_from_approach(A, B, kEStar, approach);
   Bem2dGrid grid;
   grid.dx_m = h.semi_axis_x_m / 160;
@@ -145,5 +144,6 @@ TEST_P(Bem2dNonHertz, MatchesContact) {
             << " s, " << s.iterations << " it\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(BothLoadings, Bem2dNonHertz, ::testing::Values(false, true),
-                         [](const auto& param_info) { return param_info.param ? std::string("Force") : std::string("Approach"); });
+INSTANTIATE_TEST_SUITE_P(BothLoadings, Bem2dNonHertz, ::testing::Values(false, true), [](const auto& param_info) {
+  return param_info.param ? std::string("Force") : std::string("Approach");
+});

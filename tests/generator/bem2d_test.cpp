@@ -33,8 +33,9 @@ Bem2dGrid grid_of(double dx_m, double dy_m) {
 // Ellipsoid on a flat: h = A x^2 + B y^2 with B/A = 10 (Hertz a/b = 4.5).
 constexpr double kEllipsoidA = 2.5, kEllipsoidB = 25.0;  // [1/m]
 GapProfile ellipsoid_gap() {
-  return sample_gap(-5e-3, 5e-3, 0.01e-3, [](double y) { return kEllipsoidB * y * y; }, [](double) { return kEllipsoidA; },
-                    [](double) { return kEllipsoidB; }, "ellipsoid");
+  return sample_gap(
+      -5e-3, 5e-3, 0.01e-3, [](double y) { return kEllipsoidB * y * y; }, [](double) { return kEllipsoidA; },
+      [](double) { return kEllipsoidB; }, "ellipsoid");
 }
 
 double relative(double value, double reference) { return value / reference - 1.0; }
@@ -70,8 +71,8 @@ TEST(Bem2dConvolution, MatchesTheDirectSum) {
         double direct = 0.0;
         for (std::size_t l = 0; l < ny; ++l)
           for (std::size_t k = 0; k < nx; ++k)
-            direct += p[l * nx + k] * love_influence_m_per_Pa((double(i) - double(k)) * dx, (double(j) - double(l)) * dy,
-                                                              dx, dy, kEStar);
+            direct += p[l * nx + k] * love_influence_m_per_Pa((double(i) - double(k)) * dx,
+                                                              (double(j) - double(l)) * dy, dx, dy, kEStar);
         worst = std::max(worst, std::abs(u[j * nx + i] - direct));
         largest = std::max(largest, std::abs(direct));
       }
@@ -93,7 +94,8 @@ TEST(Bem2dHertz, SphereAtCoarseMeshPrescribedApproach) {
   const double A = 1.0 / (2 * paper::kSphereRadius_m);
   const HertzContact h = hertz_from_approach(A, A, kEStar, 1e-3);
   Bem2dPressureField field;
-  const NormalSolution s = solve_bem2d_for_approach(paper::hertz_sphere_gap(), kEStar, grid_of(0.2e-3, 0.2e-3), 1e-3, &field);
+  const NormalSolution s =
+      solve_bem2d_for_approach(paper::hertz_sphere_gap(), kEStar, grid_of(0.2e-3, 0.2e-3), 1e-3, &field);
   ASSERT_EQ(s.status, SolveStatus::Converged) << status_name(s.status);
   EXPECT_EQ(s.method, "bem2d");
   ASSERT_EQ(s.patches.size(), 1u);
@@ -128,8 +130,7 @@ TEST(Bem2dHertz, SphereAtCoarseMeshPrescribedApproach) {
   EXPECT_NEAR(sum, s.normal_load_N, 1e-9 * s.normal_load_N);
   EXPECT_EQ(peak, p.max_pressure_Pa);
   for (std::size_t j = 0; j < field.ny; ++j)
-    for (std::size_t i = 0; i < field.nx; ++i)
-      EXPECT_NEAR(field.at(i, j), field.at(field.nx - 1 - i, j), 1e-6 * peak);
+    for (std::size_t i = 0; i < field.nx; ++i) EXPECT_NEAR(field.at(i, j), field.at(field.nx - 1 - i, j), 1e-6 * peak);
   EXPECT_NEAR(field.x0_m + 0.5 * static_cast<double>(field.nx - 1) * field.dx_m, 0.0, 1e-12);
 }
 
@@ -153,8 +154,9 @@ TEST(Bem2dHertz, EllipsoidConvergesWithTheMesh) {
   const HertzContact h = hertz_from_approach(kEllipsoidA, kEllipsoidB, kEStar, approach);
   double previous = 1.0;
   for (const double per_semi_axis : {20.0, 40.0}) {
-    const NormalSolution s = solve_bem2d_for_approach(
-        ellipsoid_gap(), kEStar, grid_of(h.semi_axis_x_m / per_semi_axis, h.semi_axis_y_m / per_semi_axis), approach);
+    const NormalSolution s =
+        solve_bem2d_for_approach(ellipsoid_gap(), kEStar,
+                                 grid_of(h.semi_axis_x_m / per_semi_axis, h.semi_axis_y_m / per_semi_axis), approach);
     ASSERT_EQ(s.status, SolveStatus::Converged);
     const double area_error = relative(s.patches[0].area_m2, h.area_m2);
     EXPECT_GT(area_error, 0.0);
@@ -169,8 +171,9 @@ TEST(Bem2dHertz, EllipsoidConvergesWithTheMesh) {
 TEST(Bem2dPatches, TwoSeparateContactsGiveTwoPatches) {
   // Two spherical bumps (R = 40 mm) centred at y = -/+4 mm.
   const double R = 0.04, c = 4e-3;
-  const GapProfile gap = sample_gap(-10e-3, 10e-3, 0.05e-3, [&](double y) { return std::pow(std::abs(y) - c, 2) / (2 * R); },
-                                    [&](double) { return 1 / (2 * R); }, [&](double) { return 1 / (2 * R); }, "two bumps");
+  const GapProfile gap = sample_gap(
+      -10e-3, 10e-3, 0.05e-3, [&](double y) { return std::pow(std::abs(y) - c, 2) / (2 * R); },
+      [&](double) { return 1 / (2 * R); }, [&](double) { return 1 / (2 * R); }, "two bumps");
   const NormalSolution s = solve_bem2d_for_approach(gap, kEStar, grid_of(0.2e-3, 0.2e-3), 0.05e-3);
   ASSERT_EQ(s.status, SolveStatus::Converged);
   ASSERT_EQ(s.patches.size(), 2u);

@@ -50,8 +50,7 @@ inline pid_t spawn_ctab(const std::vector<std::string>& arguments, const std::st
   envp.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  if (options.stdout_fd >= 0)
-    posix_spawn_file_actions_adddup2(&actions, options.stdout_fd, STDOUT_FILENO);
+  if (options.stdout_fd >= 0) posix_spawn_file_actions_adddup2(&actions, options.stdout_fd, STDOUT_FILENO);
   else
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, (capture + ".out").c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                      0644);

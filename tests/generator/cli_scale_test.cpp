@@ -86,7 +86,9 @@ TEST(CliBatch, TablePerPairIndexBadProfileAndResume) {
   EXPECT_EQ(index[1].rfind("\"bad__UIC60.h5\",", 0), 0u) << index[1];  // glob matches sorted
   EXPECT_NE(index[1].find(",input-error,-,0,0,"), std::string::npos) << index[1];
   EXPECT_NE(index[2].find(",ok,generated,18,0,"), std::string::npos) << index[2];
-  EXPECT_NE(index[3].find("\"S1002__UIC60.h5\",\"S1002\",\"UIC60\",ok,generated,18,0,builtin,builtin,"), std::string::npos) << index[3];
+  EXPECT_NE(index[3].find("\"S1002__UIC60.h5\",\"S1002\",\"UIC60\",ok,generated,18,0,builtin,builtin,"),
+            std::string::npos)
+      << index[3];
   EXPECT_FALSE(fs::exists(dir + "out/bad__UIC60.h5"));
   const CtabRun inspect = run_ctab({"inspect", dir + "out/w1__UIC60.h5"});
   EXPECT_EQ(inspect.exit_code, 0) << inspect.output();
@@ -118,7 +120,8 @@ TEST(CliBatch, ManifestErrorsNameTheLine) {
   write_file(dir + "m.toml", "wheels = [\"S1002\"]\nrails = [\"nothing/*.prr\"]\n");
   const CtabRun glob = run_ctab({"batch", dir + "m.toml", "-o", dir + "out"});
   EXPECT_EQ(glob.exit_code, 2);
-  EXPECT_NE(glob.err.find("m.toml:2: 'rails': the glob 'nothing/*.prr' matches no file"), std::string::npos) << glob.err;
+  EXPECT_NE(glob.err.find("m.toml:2: 'rails': the glob 'nothing/*.prr' matches no file"), std::string::npos)
+      << glob.err;
   write_file(dir + "m.toml", "pairing = \"listed\"\npairs = [[\"S1002\", \"UIC60\"], [\"S1002\"]]\n");
   const CtabRun pair = run_ctab({"batch", dir + "m.toml", "-o", dir + "out"});
   EXPECT_EQ(pair.exit_code, 2);

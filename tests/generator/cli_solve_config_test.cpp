@@ -26,9 +26,8 @@ double total_force(const ctab::tables::Table& t, std::size_t i_dy, std::size_t i
 }  // namespace
 
 TEST(CliSolveConfig, ReproducesTableEntries) {
-  const std::string text =
-      "[axes]\nlateral_displacement_m = { start = -8e-3, stop = 8e-3, step = 4e-3 }\n"
-      "vertical_load_N = [60e3, 90e3]\n";
+  const std::string text = "[axes]\nlateral_displacement_m = { start = -8e-3, stop = 8e-3, step = 4e-3 }\n"
+                           "vertical_load_N = [60e3, 90e3]\n";
   const std::string path = ctab::test::write_temp("solve_config.toml", text);
   const ctab::gen::TableConfig config = ctab::gen::read_table_config(path);
   const ctab::tables::Table table = ctab::gen::generate_table(config, ctab::gen::GeneratorInfo{});

@@ -30,7 +30,8 @@ const std::string kSphere = ctab::test::source_path("examples/gaps/hertz_sphere_
 TEST(Cli, HelpListsSubcommands) {
   const Combined run = run_ctab("--help");
   EXPECT_EQ(run.exit_code, 0);
-  for (const char* name : {"solve", "paper-cases", "bench"}) EXPECT_NE(run.output.find(name), std::string::npos) << name;
+  for (const char* name : {"solve", "paper-cases", "bench"})
+    EXPECT_NE(run.output.find(name), std::string::npos) << name;
 }
 
 TEST(Cli, SolveJson) {
@@ -56,49 +57,62 @@ TEST(Cli, HertzMethod) {
 }
 
 TEST(Cli, GenerateAndInspect) {
-  const std::string config = write_temp("small.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
-                                        "lateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 1e-3 }\n" "vertical_load_N = 78.5e3\n");
+  const std::string config =
+      write_temp("small.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
+                               "lateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 1e-3 }\n"
+                               "vertical_load_N = 78.5e3\n");
   const std::string table = ::testing::TempDir() + "small.h5";
   const Combined generated = run_ctab("generate " + config + " -o " + table + " --threads 2");
   ASSERT_EQ(generated.exit_code, 0) << generated.output;
-  EXPECT_NE(generated.output.find("5 lateral shifts x 1 vertical_load_N x 2 wheels"), std::string::npos) << generated.output;
+  EXPECT_NE(generated.output.find("5 lateral shifts x 1 vertical_load_N x 2 wheels"), std::string::npos)
+      << generated.output;
   const Combined inspected = run_ctab("inspect " + table);
   ASSERT_EQ(inspected.exit_code, 0) << inspected.output;
-  for (const char* text : {"schema version 2 (valid)", "git_commit", "wheel_profile_sha256", "lateral_displacement_m 5 values",
-                           "status counts (case x wheel): converged 10", "mode                   wheel"})
+  for (const char* text :
+       {"schema version 2 (valid)", "git_commit", "wheel_profile_sha256", "lateral_displacement_m 5 values",
+        "status counts (case x wheel): converged 10", "mode                   wheel"})
     EXPECT_NE(inspected.output.find(text), std::string::npos) << text << "\n" << inspected.output;
   // Bad inputs: clear one-line errors, non-zero exit, and the old table stays.
-  const Combined bad_config = run_ctab("generate " + write_temp("bad.toml", "[axes]\nlateral_displacement_m = 3\n") + " -o " + table);
+  const Combined bad_config =
+      run_ctab("generate " + write_temp("bad.toml", "[axes]\nlateral_displacement_m = 3\n") + " -o " + table);
   EXPECT_EQ(bad_config.exit_code, 2);
-  EXPECT_NE(bad_config.output.find("bad.toml:2: 'axes.lateral_displacement_m': expected {start, stop, step}"), std::string::npos)
+  EXPECT_NE(bad_config.output.find("bad.toml:2: 'axes.lateral_displacement_m': expected {start, stop, step}"),
+            std::string::npos)
       << bad_config.output;
   EXPECT_EQ(run_ctab("inspect " + table).exit_code, 0);
   const Combined not_a_table = run_ctab("inspect " + config);
   EXPECT_EQ(not_a_table.exit_code, 2);
   EXPECT_NE(not_a_table.output.find("not an HDF5 contact table"), std::string::npos) << not_a_table.output;
-  EXPECT_NE(run_ctab("inspect /nonexistent.h5").output.find("/nonexistent.h5: cannot open table file"), std::string::npos);
+  EXPECT_NE(run_ctab("inspect /nonexistent.h5").output.find("/nonexistent.h5: cannot open table file"),
+            std::string::npos);
 }
 
 TEST(Cli, BadInputGivesOneLineErrorAndNonZeroExit) {
   struct Case {
     std::string arguments, expected;
   };
-  const std::string bad_number = write_temp("bad_number.csv", "y_m,h_m,A_per_m,B_per_m\n0,0,1,1\n1e-3,x,1,1\n2e-3,0,1,1\n");
+  const std::string bad_number =
+      write_temp("bad_number.csv", "y_m,h_m,A_per_m,B_per_m\n0,0,1,1\n1e-3,x,1,1\n2e-3,0,1,1\n");
   const std::string empty = write_temp("empty.csv", "");
-  const std::string decreasing = write_temp("decreasing.csv", "y_m,h_m,A_per_m,B_per_m\n0,0,1,1\n-1e-3,0,1,1\n2e-3,0,1,1\n");
+  const std::string decreasing =
+      write_temp("decreasing.csv", "y_m,h_m,A_per_m,B_per_m\n0,0,1,1\n-1e-3,0,1,1\n2e-3,0,1,1\n");
   const Case cases[] = {
       {"solve --gap /nonexistent.csv --load 1", "/nonexistent.csv: cannot open gap file"},
       {"solve --gap " + bad_number + " --load 1", "bad_number.csv:3: field 'h_m': expected a number, got 'x'"},
       {"solve --gap " + empty + " --load 1", "empty gap file"},
       {"solve --gap " + decreasing + " --load 1", "decreasing.csv:3: field 'y_m': strips must be strictly increasing"},
       {"solve --gap " + kSphere + " --load 1 --E -5", "--E: expected a finite Young's modulus > 0 in Pa, got -5"},
-      {"solve --gap " + kSphere + " --load 1 --youngs-modulus -5", "--youngs-modulus: expected a finite Young's modulus > 0"},
+      {"solve --gap " + kSphere + " --load 1 --youngs-modulus -5",
+       "--youngs-modulus: expected a finite Young's modulus > 0"},
       {"solve --gap " + kSphere + " --load 1 --nu 0.7", "--nu: expected a Poisson's ratio in (-1, 0.5], got 0.7"},
-      {"solve --gap " + kSphere + " --load 1 --poisson-ratio 0.7", "--poisson-ratio: expected a Poisson's ratio in (-1, 0.5]"},
+      {"solve --gap " + kSphere + " --load 1 --poisson-ratio 0.7",
+       "--poisson-ratio: expected a Poisson's ratio in (-1, 0.5]"},
       {"solve --gap " + kSphere + " --load nan", "--load: expected a number in [0, 1e+08]"},
-      {"solve --gap " + kSphere + " --load 1 --strip-width 0", "--strip-width: expected a number in [1e-05, 0.005] m, got 0"},
+      {"solve --gap " + kSphere + " --load 1 --strip-width 0",
+       "--strip-width: expected a number in [1e-05, 0.005] m, got 0"},
       {"solve --gap " + kSphere, "give exactly one of --approach METRES or --load NEWTONS"},
-      {"solve --gap " + kSphere + " --load 1 --approach 1e-3", "give exactly one of --approach METRES or --load NEWTONS"},
+      {"solve --gap " + kSphere + " --load 1 --approach 1e-3",
+       "give exactly one of --approach METRES or --load NEWTONS"},
       {"solve --gap " + kSphere + " --load 1 --method magic", "magic"},
   };
   for (const Case& c : cases) {
@@ -119,7 +133,8 @@ TEST(CliOptions, HelpShowsTheSharedDefaults) {
       EXPECT_NE(run.output.find(text), std::string::npos) << command << ": " << text << "\n" << run.output;
   }
   const Combined solve = run_ctab("solve --help");
-  for (const char* text : {"--youngs-modulus", "--poisson-ratio", "--strip-width", "--method TEXT:{hertz,kp,analyn,mim1d,bem2d}=mim1d"})
+  for (const char* text :
+       {"--youngs-modulus", "--poisson-ratio", "--strip-width", "--method TEXT:{hertz,kp,analyn,mim1d,bem2d}=mim1d"})
     EXPECT_NE(solve.output.find(text), std::string::npos) << text;
   EXPECT_EQ(solve.output.find("--E "), std::string::npos) << "the alias --E is hidden";
   EXPECT_EQ(solve.output.find("--nu "), std::string::npos) << "the alias --nu is hidden";
@@ -137,7 +152,8 @@ TEST(CliOptions, SolveDefaultsToWheelsetModeWithBothWheels) {
     EXPECT_EQ(json[wheel]["status"], "converged") << wheel;
     EXPECT_NEAR(json[wheel]["vertical_load_N"].get<double>(), 78.5e3, 1.0) << wheel;
   }
-  const auto single = nlohmann::json::parse(run_ctab("solve --dy 2e-3 --vertical-load 78.5e3 --mode wheel --side right --json").output);
+  const auto single =
+      nlohmann::json::parse(run_ctab("solve --dy 2e-3 --vertical-load 78.5e3 --mode wheel --side right --json").output);
   EXPECT_EQ(single["mode"], "wheel");
   EXPECT_EQ(single["roll_rad"].get<double>(), 0.0);
   EXPECT_FALSE(single.contains("left"));
@@ -146,7 +162,8 @@ TEST(CliOptions, SolveDefaultsToWheelsetModeWithBothWheels) {
 
 TEST(CliOptions, LongMaterialNamesAndHiddenAliasesAgree) {
   const std::string common = "solve --gap " + kSphere + " --approach 1e-3 --json ";
-  const auto long_names = nlohmann::json::parse(run_ctab(common + "--youngs-modulus 200e9 --poisson-ratio 0.25").output);
+  const auto long_names =
+      nlohmann::json::parse(run_ctab(common + "--youngs-modulus 200e9 --poisson-ratio 0.25").output);
   const auto aliases = nlohmann::json::parse(run_ctab(common + "--E 200e9 --nu 0.25").output);
   const auto steel = nlohmann::json::parse(run_ctab(common).output);
   EXPECT_EQ(long_names["normal_load_N"], aliases["normal_load_N"]);
@@ -175,8 +192,10 @@ TEST(CliExitCodes, EachCode) {
     int exit_code;
     std::string expected;  // on stdout or stderr
   };
-  const std::string failing = write_temp("failing.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
-                                         "lateral_displacement_m = { start = -0.08, stop = -0.079, step = 1e-3 }\n" "vertical_load_N = 78.5e3\n");
+  const std::string failing =
+      write_temp("failing.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
+                                 "lateral_displacement_m = { start = -0.08, stop = -0.079, step = 1e-3 }\n"
+                                 "vertical_load_N = 78.5e3\n");
   const Case cases[] = {
       {"--help", 0, "Subcommands"},
       {"--version", 0, "ctab "},
@@ -191,8 +210,7 @@ TEST(CliExitCodes, EachCode) {
       {"generate /nonexistent.toml", 2, "/nonexistent.toml"},
       {"generate " + failing + " -o " + ::testing::TempDir() + "no_such_dir/t.h5", 3, "does not exist"},
       {"solve --dy -0.08 --normal-load 78.5e3 --mode wheel --side right", 4, "ctab solve: right wheel at dy = -0.08 m"},
-      {"generate " + failing + " --quiet -o " + ::testing::TempDir() + "failing.h5", 4,
-       "of 4 wheel cases failed"},
+      {"generate " + failing + " --quiet -o " + ::testing::TempDir() + "failing.h5", 4, "of 4 wheel cases failed"},
   };
   for (const Case& c : cases) {
     const Combined run = run_ctab(c.arguments);
@@ -238,11 +256,14 @@ TEST(CliInput, EveryBadInputSaysWhatWentWrong) {
 }
 
 TEST(CliInput, OversizedOmpNumThreadsIsClampedWithAWarning) {
-  const std::string config = write_temp("threads.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
-                                        "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n" "vertical_load_N = 78.5e3\n");
+  const std::string config =
+      write_temp("threads.toml", "[solver]\nmode = \"wheel\"\n[axes]\n"
+                                 "lateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n"
+                                 "vertical_load_N = 78.5e3\n");
   ctab::test::CtabSpawnOptions options;
   options.environment = {"OMP_NUM_THREADS=100000"};
   const CtabRun run = ctab::test::run_ctab({"generate", config, "-o", ::testing::TempDir() + "threads.h5"}, options);
   EXPECT_EQ(run.exit_code, 0) << run.output();
-  EXPECT_NE(run.err.find("ctab: warning: OMP_NUM_THREADS asks for 100000 threads; using 1024"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("ctab: warning: OMP_NUM_THREADS asks for 100000 threads; using 1024"), std::string::npos)
+      << run.err;
 }

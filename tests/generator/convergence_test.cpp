@@ -25,12 +25,15 @@ std::string config_text(bool manchester, const char* mode, const char* load_line
   if (manchester)
     text << "wheel = \"" << ctab::test::shared_path("profiles/MBench_S1002_v3.prw") << "\"\nrail = \""
          << ctab::test::shared_path("profiles/MBench_UIC60_v3.prr") << "\"\ninclination = \"0\"\n";
-  text << "[solver]\nmode = \"" << mode << "\"\n[axes]\nlateral_displacement_m = " << dy_axis << "\n" << load_line << "\n";
+  text << "[solver]\nmode = \"" << mode << "\"\n[axes]\nlateral_displacement_m = " << dy_axis << "\n"
+       << load_line << "\n";
   return text.str();
 }
 
 SweepSetup setup_for(bool manchester, const char* mode, const char* load_line) {
-  return make_sweep_setup(parse_table_config(config_text(manchester, mode, load_line, "{ start = 0.0, stop = 1e-3, step = 1e-3 }"), "convergence.toml"));
+  return make_sweep_setup(
+      parse_table_config(config_text(manchester, mode, load_line, "{ start = 0.0, stop = 1e-3, step = 1e-3 }"),
+                         "convergence.toml"));
 }
 
 // Status of the right wheel of one case (the listed failures are all on the right wheel).
@@ -76,8 +79,8 @@ TEST(Convergence, CasesThatCycledInTheBenchmarkSweep) {
 
 TEST(Convergence, LoadAxisExampleHasNoFailure) {
   // examples/configs/load_axis.toml exited with status 4 (wheelset, built-in profiles, dy +-5.1 mm at 100 kN).
-  const auto table = generate_table(read_table_config(ctab::test::source_path("examples/configs/load_axis.toml")),
-                                    GeneratorInfo{});
+  const auto table =
+      generate_table(read_table_config(ctab::test::source_path("examples/configs/load_axis.toml")), GeneratorInfo{});
   for (const auto status : table.status) EXPECT_TRUE(ctab::tables::is_success(status));
 }
 
@@ -87,7 +90,8 @@ TEST(Convergence, TinyApproachIsNoContactOnWheelRailAsOnAGapFile) {
     for (const double dy_mm : {0.0, 3.0, 6.5}) {
       const CaseSolution solved = solve_table_case(setup, dy_mm * 1e-3, 1e-9);
       for (const CaseWheel& wheel : solved.wheels)
-        EXPECT_EQ(wheel.contact.status, SolveStatus::NoContact) << mode << " dy " << dy_mm << ": " << wheel.contact.detail;
+        EXPECT_EQ(wheel.contact.status, SolveStatus::NoContact)
+            << mode << " dy " << dy_mm << ": " << wheel.contact.detail;
     }
   }
   const GapProfile gap = read_gap_csv(ctab::test::source_path("examples/gaps/hertz_sphere_r40.csv"));
@@ -99,11 +103,11 @@ TEST(Convergence, FineSweepThroughTheTwoPointRegion) {
   // CI-sized part of the benchmark: 0.01 mm steps through the tread/flange-root region where the failures
   // clustered, three loads, both modes, vertical load.
   for (const char* mode : {"wheel", "wheelset"}) {
-    const auto table = generate_table(
-        parse_table_config(config_text(true, mode, "vertical_load_N = [30e3, 80e3, 135e3]",
-                                       "{ start = 4.5e-3, stop = 5.6e-3, step = 1e-5 }"),
-                           "fine.toml"),
-        GeneratorInfo{.threads = 2});
+    const auto table =
+        generate_table(parse_table_config(config_text(true, mode, "vertical_load_N = [30e3, 80e3, 135e3]",
+                                                      "{ start = 4.5e-3, stop = 5.6e-3, step = 1e-5 }"),
+                                          "fine.toml"),
+                       GeneratorInfo{.threads = 2});
     std::size_t failed = 0;
     for (const auto status : table.status)
       if (!ctab::tables::is_success(status)) ++failed;

@@ -36,7 +36,7 @@ TEST(Elliptic, DMatchesKMinusEOverM) {
 
 TEST(Elliptic, LogarithmicLimitNearOne) {
   const double m = 1.0 - 1e-12;
-  const double mc = 1.0 - m;  // the complement actually represented (not exactly 1e-12)
+  const double mc = 1.0 - m;                       // the complement actually represented (not exactly 1e-12)
   const double L = std::log(4.0 / std::sqrt(mc));  // K = L + (mc/4)(L - 1) + O(mc^2 L) as m -> 1
   EXPECT_NEAR(elliptic_k(m), L + 0.25 * mc * (L - 1.0), 1e-13);
 }

@@ -55,10 +55,11 @@ double worst_vertical_miss(const Table& table) {
 TEST(ForceBalance, ManchesterSingleWheelThroughFlangeRootAndFlank) {
   // dy 4...8 mm: two-point contact, flange root (the issue's -3.5 % at 6.5 mm) and flank.
   std::ostringstream config;
-  config << "[profiles]\nwheel = \"" << ctab::test::shared_path("profiles/MBench_S1002_v3.prw") << "\"\nrail = \""
-         << ctab::test::shared_path("profiles/MBench_UIC60_v3.prr") << "\"\ninclination = \"0\"\n"
-         << "[solver]\nmode = \"wheel\"\n[axes]\nlateral_displacement_m = { start = 4e-3, stop = 8e-3, step = 0.1e-3 }\n"
-         << "vertical_load_N = [50e3, 78.5e3, 120e3]\n[output]\nstrip_samples = 8\n";
+  config
+      << "[profiles]\nwheel = \"" << ctab::test::shared_path("profiles/MBench_S1002_v3.prw") << "\"\nrail = \""
+      << ctab::test::shared_path("profiles/MBench_UIC60_v3.prr") << "\"\ninclination = \"0\"\n"
+      << "[solver]\nmode = \"wheel\"\n[axes]\nlateral_displacement_m = { start = 4e-3, stop = 8e-3, step = 0.1e-3 }\n"
+      << "vertical_load_N = [50e3, 78.5e3, 120e3]\n[output]\nstrip_samples = 8\n";
   const Table table = generate_and_read_back(config.str(), "force_balance_manchester");
   const double miss = worst_vertical_miss(table);
   std::printf("Manchester single wheel, dy 4..8 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
@@ -74,7 +75,8 @@ lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.25e-3 }
 vertical_load_N = [20e3, 150e3]
 [output]
 strip_samples = 8
-)", "force_balance_builtin");
+)",
+                                             "force_balance_builtin");
   const double miss = worst_vertical_miss(table);
   std::printf("built-in wheelset, dy -12..12 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
   EXPECT_LE(miss, 1e-9);
@@ -85,7 +87,8 @@ TEST(ForceBalance, WheelContactReportsTheBalancedComponents) {
   std::ostringstream config;
   config << "[profiles]\nwheel = \"" << ctab::test::shared_path("profiles/MBench_S1002_v3.prw") << "\"\nrail = \""
          << ctab::test::shared_path("profiles/MBench_UIC60_v3.prr") << "\"\ninclination = \"0\"\n"
-         << "[solver]\nmode = \"wheel\"\n[axes]\nlateral_displacement_m = { start = 0.0, stop = 1e-3, step = 1e-3 }\nvertical_load_N = 78.5e3\n";
+         << "[solver]\nmode = \"wheel\"\n[axes]\nlateral_displacement_m = { start = 0.0, stop = 1e-3, step = 1e-3 "
+            "}\nvertical_load_N = 78.5e3\n";
   const SweepSetup setup = make_sweep_setup(parse_table_config(config.str(), "solve.toml"));
   for (const double dy_mm : {0.0, 5.0, 5.5, 6.5, 7.5}) {
     const WheelContact contact = solve_table_case(setup, dy_mm * 1e-3, 78.5e3).wheels[0].contact;

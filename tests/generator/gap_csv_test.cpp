@@ -40,7 +40,8 @@ TEST(GapCsv, RejectsMalformedInputWithFileLineAndField) {
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n1e-3,abc,1,1\n"), "gap.csv:3: field 'h_m': expected a number, got 'abc'");
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n1e-3,nan,1,1\n"), "gap.csv:3: field 'h_m': value is not finite");
   EXPECT_EQ(error_of(kHeader + "0,0,1\n"), "gap.csv:2: expected 4 fields, got 3");
-  EXPECT_EQ(error_of(kHeader + "0,0,1,1\n0,0,1,1\n"), "gap.csv:3: field 'y_m': strips must be strictly increasing in y");
+  EXPECT_EQ(error_of(kHeader + "0,0,1,1\n0,0,1,1\n"),
+            "gap.csv:3: field 'y_m': strips must be strictly increasing in y");
   EXPECT_EQ(error_of(kHeader + "0,0,-1,1\n"), "gap.csv:2: field 'A_per_m': must be positive, got '-1'");
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n1e-3,0,1,1\n"), "gap.csv:3: need at least 3 rows of gap data, got 2");
   EXPECT_EQ(error_of(kHeader), "gap.csv:1: need at least 3 rows of gap data, got 0");

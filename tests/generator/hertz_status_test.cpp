@@ -59,7 +59,8 @@ method = "hertz"
 [axes]
 lateral_displacement_m = { start = 0.0, stop = 1e-3, step = 1e-3 }
 approach_m = 10e-3
-)", "hertz.toml"));
+)",
+                                                               "hertz.toml"));
   EXPECT_EQ(solve_table_case(setup, 0.0, 10e-3).wheels[0].contact.status, SolveStatus::ZoneTruncated);
   EXPECT_EQ(solve_table_case(setup, 0.0, 0.1e-3).wheels[0].contact.status, SolveStatus::Converged);
 }

@@ -45,7 +45,8 @@ TEST(TextInput, StripsAByteOrderMarkOnly) {
 }
 
 TEST(TextInput, LineReaderCountsLinesDropsBomAndCrAndSeesACutLastLine) {
-  std::istringstream in("\xEF\xBB\xBF" "first\r\nsecond\nthird");
+  std::istringstream in("\xEF\xBB\xBF"
+                        "first\r\nsecond\nthird");
   LineReader reader(in);
   std::string text;
   ASSERT_TRUE(reader.next(text));

@@ -74,8 +74,9 @@ void expect_force_balance(const NormalSolution& s, const std::string& what) {
 
 // An elliptic (quadratic) gap h = B y^2, A constant, sampled well beyond the Hertz half-width.
 GapProfile quadratic_gap(double A, double B, double half_range_m) {
-  return sample_gap(-half_range_m, half_range_m, half_range_m / 400.0, [B](double y) { return B * y * y; },
-                    [A](double) { return A; }, [B](double) { return B; }, "quadratic gap");
+  return sample_gap(
+      -half_range_m, half_range_m, half_range_m / 400.0, [B](double y) { return B * y * y; }, [A](double) { return A; },
+      [B](double) { return B; }, "quadratic gap");
 }
 
 }  // namespace
@@ -104,7 +105,8 @@ TEST(MethodLadder, HertzSphereAtPrescribedForce) {
                                                                 {ContactMethod::Mim1d, 0.002},
                                                                 {ContactMethod::Bem2d, 0.01}};
   for (const auto& [method, tol] : tolerance) {
-    const NormalSolution s = solve_normal_contact(paper::hertz_sphere_gap(), options_for(method), Loading::normal_force(kSphereForce_N));
+    const NormalSolution s =
+        solve_normal_contact(paper::hertz_sphere_gap(), options_for(method), Loading::normal_force(kSphereForce_N));
     ASSERT_EQ(s.status, SolveStatus::Converged) << method_name(method);
     EXPECT_EQ(s.method, method_name(method));
     ASSERT_EQ(s.patches.size(), 1u);
@@ -126,14 +128,16 @@ TEST(MethodLadder, KikPiotrowskiOnTheSphereMatchesItsClosedForm) {
   const HertzContact at_force = hertz_from_load(1.0 / 0.08, 1.0 / 0.08, kEStar, kSphereForce_N);
   const HertzContact at_approach = hertz_from_approach(1.0 / 0.08, 1.0 / 0.08, kEStar, paper::kApproach_m);
   const auto options = options_for(ContactMethod::Kp);
-  const NormalSolution f = solve_normal_contact(paper::hertz_sphere_gap(), options, Loading::normal_force(kSphereForce_N));
+  const NormalSolution f =
+      solve_normal_contact(paper::hertz_sphere_gap(), options, Loading::normal_force(kSphereForce_N));
   ASSERT_EQ(f.status, SolveStatus::Converged);
   EXPECT_NEAR(total_area(f) / at_force.area_m2, std::pow(ratio, 2.0 / 3.0), 0.002);
   EXPECT_NEAR(max_pressure(f) / at_force.max_pressure_Pa, std::pow(ratio, -2.0 / 3.0), 0.002);
   EXPECT_NEAR(f.approach_m / at_force.approach_m, std::pow(ratio, -1.0 / 3.0), 0.002);
   EXPECT_NEAR(f.normal_load_N / kSphereForce_N, 1.0, 1e-9);
   expect_force_balance(f, "kp force");
-  const NormalSolution p = solve_normal_contact(paper::hertz_sphere_gap(), options, Loading::approach(paper::kApproach_m));
+  const NormalSolution p =
+      solve_normal_contact(paper::hertz_sphere_gap(), options, Loading::approach(paper::kApproach_m));
   ASSERT_EQ(p.status, SolveStatus::Converged);
   EXPECT_DOUBLE_EQ(p.approach_m, paper::kApproach_m);
   EXPECT_NEAR(total_area(p) / at_approach.area_m2, ratio, 0.002);
@@ -150,7 +154,8 @@ TEST(MethodLadder, EllipticGapsAnalynExactKpAsDerived) {
     const HertzContact hertz = hertz_from_approach(A, B, kEStar, approach);
     const GapProfile gap = quadratic_gap(A, B, 3.0 * hertz.semi_axis_y_m);
     const double width = 2.0 * hertz.semi_axis_y_m / 60.0;  // 60 strips across the patch
-    const NormalSolution analyn = solve_normal_contact(gap, options_for(ContactMethod::Analyn, width), Loading::approach(approach));
+    const NormalSolution analyn =
+        solve_normal_contact(gap, options_for(ContactMethod::Analyn, width), Loading::approach(approach));
     ASSERT_EQ(analyn.status, SolveStatus::Converged);
     EXPECT_NEAR(total_area(analyn) / hertz.area_m2, 1.0, 0.002) << curvature_ratio;  // measured +0.06 %
     EXPECT_NEAR(max_pressure(analyn) / hertz.max_pressure_Pa, 1.0, 0.002) << curvature_ratio;
@@ -158,7 +163,8 @@ TEST(MethodLadder, EllipticGapsAnalynExactKpAsDerived) {
     const double alpha1 = approach / (A * std::pow(hertz.semi_axis_x_m, 2));
     const double beta1 = approach / (B * std::pow(hertz.semi_axis_y_m, 2));
     EXPECT_NEAR(1.0 / alpha1 + 1.0 / beta1, 1.0, 1e-9);
-    const NormalSolution kp = solve_normal_contact(gap, options_for(ContactMethod::Kp, width), Loading::approach(approach));
+    const NormalSolution kp =
+        solve_normal_contact(gap, options_for(ContactMethod::Kp, width), Loading::approach(approach));
     ASSERT_EQ(kp.status, SolveStatus::Converged);
     EXPECT_NEAR(total_area(kp) / hertz.area_m2, kKikPiotrowskiEpsilon * std::sqrt(alpha1 * beta1), 0.003)
         << curvature_ratio;
@@ -192,12 +198,14 @@ TEST(MethodLadder, NonHertzianCaseAgainstContact) {
     // Hertz's ellipse (R_y 500 mm at the deepest point) is wider than the gap data (y up to 35 mm): it says so
     // (zone-truncated, as MIM-1D would) and still reports its ellipse, whose errors are guarded here.
     const SolveStatus expected = e.method == ContactMethod::Hertz ? SolveStatus::ZoneTruncated : SolveStatus::Converged;
-    const NormalSolution p = solve_normal_contact(paper::nonhertz_gap(), options_for(e.method), Loading::approach(1e-3));
+    const NormalSolution p =
+        solve_normal_contact(paper::nonhertz_gap(), options_for(e.method), Loading::approach(1e-3));
     ASSERT_EQ(p.status, expected) << name;
     EXPECT_NEAR(pct(total_area(p), area[0] * 1e-6), e.area_pct_P, kMargin_pct) << name;
     EXPECT_NEAR(pct(max_pressure(p), pmax[0] * 1e6), e.pmax_pct_P, kMargin_pct) << name;
     EXPECT_NEAR(pct(p.normal_load_N, force[0]), e.force_pct_P, kMargin_pct) << name;
-    const NormalSolution f = solve_normal_contact(paper::nonhertz_gap(), options_for(e.method), Loading::normal_force(force[1]));
+    const NormalSolution f =
+        solve_normal_contact(paper::nonhertz_gap(), options_for(e.method), Loading::normal_force(force[1]));
     ASSERT_EQ(f.status, expected) << name;
     EXPECT_NEAR(pct(total_area(f), area[1] * 1e-6), e.area_pct_F, kMargin_pct) << name;
     EXPECT_NEAR(pct(max_pressure(f), pmax[1] * 1e6), e.pmax_pct_F, kMargin_pct) << name;
@@ -211,8 +219,9 @@ TEST(MethodLadder, NonHertzianCaseAgainstContact) {
 // = 2 c y_e^2, far above the A/20 floor here.
 TEST(MethodLadder, HertzUsesPatchMeanCurvatureWhereLocalIsTooSmall) {
   const double A = 1.0 / (2.0 * 0.46), c = 2e4, approach = 50e-6;  // h = c y^4 [m]
-  GapProfile gap = sample_gap(-0.02, 0.02, 0.02e-3, [c](double y) { return c * y * y * y * y; },
-                              [A](double) { return A; }, [c](double y) { return 6.0 * c * y * y; }, "quartic gap");
+  GapProfile gap = sample_gap(
+      -0.02, 0.02, 0.02e-3, [c](double y) { return c * y * y * y * y; }, [A](double) { return A; },
+      [c](double y) { return 6.0 * c * y * y; }, "quartic gap");
   const double y_e = std::pow(approach / c, 0.25), B_mean = 2.0 * c * y_e * y_e;
   ASSERT_GT(B_mean, 5.0 * A / 20.0);
   const HertzContact expected = hertz_from_approach(A, B_mean, kEStar, approach);
@@ -234,15 +243,17 @@ TEST(MethodLadder, HertzUsesPatchMeanCurvatureWhereLocalIsTooSmall) {
 // 0.1 1/m at 1 MN does), which says so instead of returning a wrong patch.
 TEST(MethodLadder, NegativeCurvatureGivesNoNaN) {
   const double A = 1.0 / (2.0 * 0.46), w = 3e-3, c = 1e6;  // h = c (y^2 - w^2)^2, hump c w^4 = 81 um
-  const GapProfile hollow = sample_gap(-0.015, 0.015, 0.05e-3, [&](double y) { return c * std::pow(y * y - w * w, 2); },
-                                       [A](double) { return A; }, [&](double y) { return c * (6 * y * y - 2 * w * w); },
-                                       "hollow gap");
-  const GapProfile concave_b = sample_gap(-0.015, 0.015, 0.05e-3, [](double y) { return y * y / 0.6; },
-                                          [A](double) { return A; }, [](double) { return -2.0; }, "negative B");
+  const GapProfile hollow = sample_gap(
+      -0.015, 0.015, 0.05e-3, [&](double y) { return c * std::pow(y * y - w * w, 2); }, [A](double) { return A; },
+      [&](double y) { return c * (6 * y * y - 2 * w * w); }, "hollow gap");
+  const GapProfile concave_b = sample_gap(
+      -0.015, 0.015, 0.05e-3, [](double y) { return y * y / 0.6; }, [A](double) { return A; },
+      [](double) { return -2.0; }, "negative B");
   for (const GapProfile* gap : {&hollow, &concave_b})
     for (const ContactMethod m : kRungs)
-      for (const Loading loading : {Loading::approach(1e-6), Loading::approach(40e-6), Loading::approach(200e-6),
-                                    Loading::normal_force(1.0), Loading::normal_force(80e3), Loading::normal_force(1e6)}) {
+      for (const Loading loading :
+           {Loading::approach(1e-6), Loading::approach(40e-6), Loading::approach(200e-6), Loading::normal_force(1.0),
+            Loading::normal_force(80e3), Loading::normal_force(1e6)}) {
         const std::string what = gap->source + " " + method_name(m) + " " + std::to_string(loading.value);
         const NormalSolution s = solve_normal_contact(*gap, options_for(m), loading);
         EXPECT_TRUE(is_success(s.status) || s.status == SolveStatus::ZoneTruncated)
@@ -266,11 +277,16 @@ TEST(MethodLadder, BadInputGivesInvalidInput) {
   for (const ContactMethod m : kRungs) {
     const std::string name = method_name(m);
     const MethodOptions options = options_for(m);
-    EXPECT_EQ(solve_normal_contact(nan_gap, options, Loading::normal_force(1e3)).status, SolveStatus::InvalidInput) << name;
-    EXPECT_EQ(solve_normal_contact(short_gap, options, Loading::approach(1e-4)).status, SolveStatus::InvalidInput) << name;
-    EXPECT_EQ(solve_normal_contact(GapProfile{}, options, Loading::approach(1e-4)).status, SolveStatus::InvalidInput) << name;
-    EXPECT_EQ(solve_normal_contact(good, options, Loading::normal_force(-1.0)).status, SolveStatus::InvalidInput) << name;
-    EXPECT_EQ(solve_normal_contact(good, options, Loading::normal_force(nan)).status, SolveStatus::InvalidInput) << name;
+    EXPECT_EQ(solve_normal_contact(nan_gap, options, Loading::normal_force(1e3)).status, SolveStatus::InvalidInput)
+        << name;
+    EXPECT_EQ(solve_normal_contact(short_gap, options, Loading::approach(1e-4)).status, SolveStatus::InvalidInput)
+        << name;
+    EXPECT_EQ(solve_normal_contact(GapProfile{}, options, Loading::approach(1e-4)).status, SolveStatus::InvalidInput)
+        << name;
+    EXPECT_EQ(solve_normal_contact(good, options, Loading::normal_force(-1.0)).status, SolveStatus::InvalidInput)
+        << name;
+    EXPECT_EQ(solve_normal_contact(good, options, Loading::normal_force(nan)).status, SolveStatus::InvalidInput)
+        << name;
     EXPECT_EQ(solve_normal_contact(good, options, Loading::approach(nan)).status, SolveStatus::InvalidInput) << name;
     MethodOptions bad = options;
     bad.E_star_Pa = -1.0;

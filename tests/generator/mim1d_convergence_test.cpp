@@ -20,12 +20,16 @@ void expect_same_answer_from_ten_zones(const GapProfile& gap, double force, doub
   const NormalSolution reference = reference_solver.solve_for_load(force);
   ASSERT_EQ(reference.status, SolveStatus::Converged);
   // Zones: shrunk, widened, shifted to either side, one-sided, a single strip.
-  const std::vector<std::pair<double, double>> zones = {
-      {centre - 0.2 * half_width, centre + 0.2 * half_width}, {centre - 0.5 * half_width, centre + 0.5 * half_width},
-      {centre - 2.0 * half_width, centre + 2.0 * half_width}, {centre - 5.0 * half_width, centre + 5.0 * half_width},
-      {centre - 1.0 * half_width, centre},                    {centre, centre + 1.0 * half_width},
-      {centre - 0.3 * half_width, centre + 1.5 * half_width}, {centre - 1.5 * half_width, centre + 0.3 * half_width},
-      {centre + 0.5 * half_width, centre + 0.9 * half_width}, {centre - 1e-4, centre + 1e-4}};
+  const std::vector<std::pair<double, double>> zones = {{centre - 0.2 * half_width, centre + 0.2 * half_width},
+                                                        {centre - 0.5 * half_width, centre + 0.5 * half_width},
+                                                        {centre - 2.0 * half_width, centre + 2.0 * half_width},
+                                                        {centre - 5.0 * half_width, centre + 5.0 * half_width},
+                                                        {centre - 1.0 * half_width, centre},
+                                                        {centre, centre + 1.0 * half_width},
+                                                        {centre - 0.3 * half_width, centre + 1.5 * half_width},
+                                                        {centre - 1.5 * half_width, centre + 0.3 * half_width},
+                                                        {centre + 0.5 * half_width, centre + 0.9 * half_width},
+                                                        {centre - 1e-4, centre + 1e-4}};
   ASSERT_EQ(zones.size(), 10u);
   for (const auto& zone : zones) {
     Mim1dOptions options;

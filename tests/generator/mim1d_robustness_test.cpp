@@ -85,8 +85,8 @@ TEST(Mim1dRobustness, EdgeCasesAreStatuses) {
 TEST(Mim1dRobustness, ConcaveGapUsesTheCurvatureFloor) {
   // Lateral curvature negative at the first contact point (conformal-like), convex further out.
   const GapProfile gap = sample_gap(
-      -0.02, 0.02, 0.05e-3, [](double y) { return 2e4 * y * y * y * y - 2.0 * y * y + 5e-5; }, [](double) { return 1.1; },
-      [](double y) { return 12e4 * y * y - 2.0; }, "w-shaped");
+      -0.02, 0.02, 0.05e-3, [](double y) { return 2e4 * y * y * y * y - 2.0 * y * y + 5e-5; },
+      [](double) { return 1.1; }, [](double y) { return 12e4 * y * y - 2.0; }, "w-shaped");
   Mim1dSolver solver(gap, kEStar, {});
   const NormalSolution s = solver.solve_for_load(50e3);
   EXPECT_EQ(s.status, SolveStatus::Converged);

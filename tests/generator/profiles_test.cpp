@@ -43,7 +43,8 @@ std::string error_of(const std::string& path, ProfileRole role) {
 
 std::string ten_points(double step_sign = 1.0) {
   std::string text;
-  for (int i = 0; i < 12; ++i) text += std::to_string(step_sign * (-20.0 + 4.0 * i)) + " " + std::to_string(0.01 * (i - 6) * (i - 6)) + "\n";
+  for (int i = 0; i < 12; ++i)
+    text += std::to_string(step_sign * (-20.0 + 4.0 * i)) + " " + std::to_string(0.01 * (i - 6) * (i - 6)) + "\n";
   return text;
 }
 
@@ -58,7 +59,7 @@ TEST(Profiles, BuiltinS1002MatchesTheManchesterFile) {
     worst = std::max(worst, std::abs(s1002_mm(points.y_m[i] * 1e3).f - points.z_m[i] * 1e3));
   EXPECT_LT(worst, 1e-4);  // mm
   const ProfileTable table(*s1002_curve(), kProfileTableStep_m, "S1002");
-  EXPECT_NEAR(table.at(-0.055).z, 28e-3, 1e-9);  // flange tip F = 28 mm at S = -55 mm
+  EXPECT_NEAR(table.at(-0.055).z, 28e-3, 1e-9);                // flange tip F = 28 mm at S = -55 mm
   EXPECT_NEAR(1.0 / table.at(0.0).curvature(), 0.320, 0.002);  // tread radius 320 mm at the tape circle
 }
 
@@ -180,7 +181,8 @@ std::string s1002_points_mm() {
 }
 
 //! A MiniProf rail file: header, then `rows` rows of a parabola (numbers written %.7E), the last `last_row`.
-std::string miniprof_text(const std::string& declared, int rows, const std::string& last_row = "", bool final_newline = true) {
+std::string miniprof_text(const std::string& declared, int rows, const std::string& last_row = "",
+                          bool final_newline = true) {
   std::string text = "Filename=t.ban\nXYPoints=" + declared + "\nColumnDef=X,Y\n\n";
   char line[80];
   for (int i = 0; i < rows; ++i) {
@@ -230,7 +232,7 @@ TEST(InclinedTwice, AnInclinedRailFileIsNotInclinedAgain) {
     EXPECT_TRUE(contains(message, inclined + ": the rail head is already canted: measured cant 0.02")) << message;
     EXPECT_TRUE(contains(message, "pass --inclination 0 (inclination = \"0\" in a config)")) << message;
   }
-  EXPECT_TRUE(contains(load_error(inclined, ProfileRole::Rail, 1.0 / 40.0), "inclining it by 1:40 would give 1:20.")) ;
+  EXPECT_TRUE(contains(load_error(inclined, ProfileRole::Rail, 1.0 / 40.0), "inclining it by 1:40 would give 1:20."));
   EXPECT_EQ(load_error(inclined, ProfileRole::Rail, 0.0), "no error");
 }
 
@@ -245,7 +247,9 @@ TEST(InclinedTwice, AnUprightRailFileIsInclinedLikeTheBuiltin) {
 TEST(InclinedTwice, ManchesterRailFileWithTheDefaultInclinationIsAnError) {
   const std::string path = profile_file("MBench_UIC60_v3.prr");
   const std::string message = load_error(path, ProfileRole::Rail, 1.0 / 40.0);
-  EXPECT_EQ(message.rfind(path + ": the rail head is already canted: measured cant 0.0247 (1:40.4; the limit is 0.0125)", 0), 0u)
+  EXPECT_EQ(
+      message.rfind(path + ": the rail head is already canted: measured cant 0.0247 (1:40.4; the limit is 0.0125)", 0),
+      0u)
       << message;
   EXPECT_EQ(load_error(path, ProfileRole::Rail, 0.0), "no error");
 }
@@ -253,11 +257,14 @@ TEST(InclinedTwice, ManchesterRailFileWithTheDefaultInclinationIsAnError) {
 TEST(MiniProf, DeclaredPointCountIsChecked) {
   EXPECT_EQ(error_of(write_temp("ok.ban", miniprof_text("12", 12)), ProfileRole::Rail), "no error");
   const std::string short_file = write_temp("short.ban", miniprof_text("12", 11));
-  EXPECT_EQ(error_of(short_file, ProfileRole::Rail), short_file + ":15: expected 12 points (XYPoints on line 2), found 11");
+  EXPECT_EQ(error_of(short_file, ProfileRole::Rail),
+            short_file + ":15: expected 12 points (XYPoints on line 2), found 11");
   const std::string long_file = write_temp("long.ban", miniprof_text("10", 12));
-  EXPECT_EQ(error_of(long_file, ProfileRole::Rail), long_file + ":16: expected 10 points (XYPoints on line 2), found 12");
+  EXPECT_EQ(error_of(long_file, ProfileRole::Rail),
+            long_file + ":16: expected 10 points (XYPoints on line 2), found 12");
   const std::string bad_count = write_temp("bad_count.ban", miniprof_text("12.5", 12));
-  EXPECT_EQ(error_of(bad_count, ProfileRole::Rail), bad_count + ":2: XYPoints: expected a whole number of points, got '12.5'");
+  EXPECT_EQ(error_of(bad_count, ProfileRole::Rail),
+            bad_count + ":2: XYPoints: expected a whole number of points, got '12.5'");
 }
 
 TEST(MiniProf, MarkedRowsCountButAreNotUsed) {
@@ -269,16 +276,19 @@ TEST(MiniProf, MarkedRowsCountButAreNotUsed) {
 
 TEST(MiniProf, DeclaredColumnCountIsChecked) {
   const std::string path = write_temp("one_column.ban", miniprof_text("12", 11, "2.4000000E+01\n"));
-  EXPECT_EQ(error_of(path, ProfileRole::Rail), path + ":16: expected 2 numbers per point (ColumnDef on line 3), found 1");
+  EXPECT_EQ(error_of(path, ProfileRole::Rail),
+            path + ":16: expected 2 numbers per point (ColumnDef on line 3), found 1");
 }
 
 TEST(MiniProf, ALastNumberCutShortIsAnError) {
   const std::string cut = write_temp("cut.ban", miniprof_text("12", 11, "2.4000000E+01\t3.6", false));
-  EXPECT_EQ(error_of(cut, ProfileRole::Rail),
-            cut + ":16: the last point looks cut short: '3.6' is not written like '1.6000000E-01' on line 15 and the file "
-                  "ends without a newline (truncated file?)");
+  EXPECT_EQ(
+      error_of(cut, ProfileRole::Rail),
+      cut + ":16: the last point looks cut short: '3.6' is not written like '1.6000000E-01' on line 15 and the file "
+            "ends without a newline (truncated file?)");
   // The same last row complete, without the final newline: fine.
-  EXPECT_EQ(error_of(write_temp("whole.ban", miniprof_text("12", 11, "2.4000000E+01\t3.6000000E-01", false)), ProfileRole::Rail),
+  EXPECT_EQ(error_of(write_temp("whole.ban", miniprof_text("12", 11, "2.4000000E+01\t3.6000000E-01", false)),
+                     ProfileRole::Rail),
             "no error");
 }
 
@@ -290,21 +300,28 @@ TEST(SimpackScale, WheelUnitFactorOffBy2IsNamed) {
   const std::string halved = write_temp("s1002_half.prw", simpack_text(s1002_points_mm(), 2000.0));
   EXPECT_EQ(error_of(halved, ProfileRole::Wheel),
             halved + ": wheel profile width 64.8 mm is outside 100 to 160 mm: check units.len.f (scale)");
-  const std::string shifted = write_temp("s1002_shifted.prw", simpack_text(s1002_points_mm(), 1000.0, "  shift.y = 75\n"));
-  EXPECT_EQ(error_of(shifted, ProfileRole::Wheel),
-            shifted + ": wheel profile spans y = 5.4 to 135.0 mm, without the tape circle y = 0: check shift.y and units.len.f");
+  const std::string shifted =
+      write_temp("s1002_shifted.prw", simpack_text(s1002_points_mm(), 1000.0, "  shift.y = 75\n"));
+  EXPECT_EQ(
+      error_of(shifted, ProfileRole::Wheel),
+      shifted +
+          ": wheel profile spans y = 5.4 to 135.0 mm, without the tape circle y = 0: check shift.y and units.len.f");
   const std::string low = write_temp("s1002_low.prw", simpack_text(s1002_points_mm(), 1000.0, "  shift.y = 69.6\n"));
-  EXPECT_TRUE(contains(error_of(low, ProfileRole::Wheel), "wheel flange height (flange tip above the tape circle y = 0) 14.")) << error_of(low, ProfileRole::Wheel);
+  EXPECT_TRUE(
+      contains(error_of(low, ProfileRole::Wheel), "wheel flange height (flange tip above the tape circle y = 0) 14."))
+      << error_of(low, ProfileRole::Wheel);
 }
 
 TEST(SimpackScale, RailUnitFactorOffBy2IsNamed) {
   const std::string points = points_text(builtin_60e1(0.0), 0.25);
   EXPECT_EQ(error_of(write_temp("60e1.prr", simpack_text(points, 1000.0)), ProfileRole::Rail), "no error");
   const std::string doubled = write_temp("60e1_x2.prr", simpack_text(points, 500.0));
-  EXPECT_TRUE(contains(error_of(doubled, ProfileRole::Rail), doubled + ": rail profile width 14")) << error_of(doubled, ProfileRole::Rail);
+  EXPECT_TRUE(contains(error_of(doubled, ProfileRole::Rail), doubled + ": rail profile width 14"))
+      << error_of(doubled, ProfileRole::Rail);
   EXPECT_TRUE(contains(error_of(doubled, ProfileRole::Rail), " mm is outside 50 to 120 mm: check units.len.f (scale)"));
   const std::string halved = write_temp("60e1_half.prr", simpack_text(points, 2000.0));
-  EXPECT_TRUE(contains(error_of(halved, ProfileRole::Rail), halved + ": rail profile width 3")) << error_of(halved, ProfileRole::Rail);
+  EXPECT_TRUE(contains(error_of(halved, ProfileRole::Rail), halved + ": rail profile width 3"))
+      << error_of(halved, ProfileRole::Rail);
 }
 
 TEST(Profiles, DuplicatePointIsNamedNotCalledALoop) {
@@ -320,17 +337,20 @@ TEST(Profiles, DuplicatePointIsNamedNotCalledALoop) {
 }
 
 TEST(Profiles, ByteOrderMarkIsSkippedInColumnFiles) {
-  const ProfilePoints with_header = read_profile_points(write_temp("bom_header.csv", "\xEF\xBB\xBFy,z\n" + ten_points()),
-                                                        ProfileRole::Rail, as_given());
+  const ProfilePoints with_header =
+      read_profile_points(write_temp("bom_header.csv", "\xEF\xBB\xBFy,z\n" + ten_points()), ProfileRole::Rail,
+                          as_given());
   EXPECT_EQ(with_header.y_m.size(), 12u);
-  const ProfilePoints bare = read_profile_points(write_temp("bom.txt", "\xEF\xBB\xBF" + ten_points()), ProfileRole::Rail, as_given());
+  const ProfilePoints bare =
+      read_profile_points(write_temp("bom.txt", "\xEF\xBB\xBF" + ten_points()), ProfileRole::Rail, as_given());
   ASSERT_EQ(bare.y_m.size(), 12u);
   EXPECT_DOUBLE_EQ(bare.y_m.front(), -20e-3);
 }
 
 TEST(Profiles, HugeFieldIsEchoedCutShort) {
   const std::string path = write_temp("huge.txt", "0 0\n1 " + std::string(2'000'000, 'x') + "\n");
-  EXPECT_EQ(error_of(path, ProfileRole::Rail), path + ":2: expected numeric coordinates, got '1 " + std::string(58, 'x') + "\xE2\x80\xA6'");
+  EXPECT_EQ(error_of(path, ProfileRole::Rail),
+            path + ":2: expected numeric coordinates, got '1 " + std::string(58, 'x') + "\xE2\x80\xA6'");
 }
 
 TEST(Profiles, InclinationTextIsEchoedCutShort) {

@@ -35,20 +35,20 @@ TEST(SlotAssignment, FirstCaseIsTheZoneRule) {
 TEST(SlotAssignment, TwoContactsKeepTheirSlotsWhenTheSolverOrderSwaps) {
   // The hollow-wheel case: the deepest (first) patch changes from +5 mm to -25 mm between two dy.
   const auto a = assign_slots_along_dy({success({{5.3e-3, false}, {-25.8e-3, false}}),
-                                        success({{-25.8e-3, false}, {5.5e-3, false}}),
-                                        success({{-25.7e-3, false}})}, 3);
+                                        success({{-25.8e-3, false}, {5.5e-3, false}}), success({{-25.7e-3, false}})},
+                                       3);
   EXPECT_EQ(a[0].slot_of, (std::vector<std::size_t>{0, 2}));
   EXPECT_EQ(a[1].slot_of, (std::vector<std::size_t>{2, 0}));
   EXPECT_EQ(a[2].slot_of, (std::vector<std::size_t>{2}));  // the +5 mm contact ended: slot 0 empties
 }
 
 TEST(SlotAssignment, NewContactTakesItsZoneSlotAndALoneJumpKeepsItsSlot) {
-  const auto a = assign_slots_along_dy({success({{-7e-3, false}}),
-                                        success({{-18e-3, false}}),                    // lone tread jump, 11 mm
-                                        success({{-23e-3, false}, {-34e-3, true}}),    // flange appears
-                                        success({{-42e-3, true}}),                     // tread ends, flange jumps
-                                        success({})},                                  // no contact
-                                       3);
+  const auto a =
+      assign_slots_along_dy({success({{-7e-3, false}}), success({{-18e-3, false}}),  // lone tread jump, 11 mm
+                             success({{-23e-3, false}, {-34e-3, true}}),             // flange appears
+                             success({{-42e-3, true}}),                              // tread ends, flange jumps
+                             success({})},                                           // no contact
+                            3);
   EXPECT_EQ(a[1].slot_of, (std::vector<std::size_t>{0}));
   EXPECT_EQ(a[2].slot_of, (std::vector<std::size_t>{0, 1}));
   EXPECT_EQ(a[3].slot_of, (std::vector<std::size_t>{1}));
@@ -66,9 +66,8 @@ TEST(SlotAssignment, TreadAndFlangeFarApartAreDifferentContacts) {
 }
 
 TEST(SlotAssignment, FailedAndOverflowingCasesCarryTheSlotsOver) {
-  const auto a = assign_slots_along_dy({success({{5e-3, false}, {-25e-3, false}}),
-                                        SlotCase{},                                                     // failed
-                                        success({{-25e-3, false}, {5e-3, false}, {-10e-3, false}}),     // 3 > 2 slots
+  const auto a = assign_slots_along_dy({success({{5e-3, false}, {-25e-3, false}}), SlotCase{},       // failed
+                                        success({{-25e-3, false}, {5e-3, false}, {-10e-3, false}}),  // 3 > 2 slots
                                         success({{-24.8e-3, false}, {5.1e-3, false}})},
                                        2);
   EXPECT_EQ(a[0].slot_of, (std::vector<std::size_t>{0, 1}));  // two slots: the second tread patch takes slot 1
@@ -90,7 +89,8 @@ namespace {
 // from its radius, written as a plain `y z` file in mm (canonical frame: y = S, z = radius increase).
 std::string hollow_worn_wheel(double depth_m, double width_m) {
   ProfileReadOptions options;
-  const ProfilePoints points = read_profile_points(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, options);
+  const ProfilePoints points =
+      read_profile_points(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, options);
   const std::string path = ::testing::TempDir() + "hollow_worn_s1002.txt";
   std::ofstream out(path);
   out.precision(12);
@@ -138,12 +138,14 @@ TEST(SlotAssignment, HollowWornWheelSlotsFollowTheContacts) {
       }
       bool flagged = false;
       for (const auto& jump : table.jumps)
-        flagged |= jump.i_second == 0 && jump.wheel == wheel && jump.slot == slot && jump.i_dy == i && jump.kind == JumpKind::Moves;
+        flagged |= jump.i_second == 0 && jump.wheel == wheel && jump.slot == slot && jump.i_dy == i &&
+                   jump.kind == JumpKind::Moves;
       EXPECT_TRUE(flagged) << "slot " << slot << " jumps at dy index " << i << " without a 'moves' jump";
     }
     std::size_t both = 0;
     for (std::size_t slot = 0; slot < table.n_slots; ++slot)
-      both += table.patch.present[table.patch_index(i, 0, wheel, slot)] && table.patch.present[table.patch_index(i + 1, 0, wheel, slot)];
+      both += table.patch.present[table.patch_index(i, 0, wheel, slot)] &&
+              table.patch.present[table.patch_index(i + 1, 0, wheel, slot)];
     two_contact_cells += both >= 2;
   }
   EXPECT_GE(two_contact_cells, 3u) << "the hollow must give two tread contacts over a range of dy";
@@ -176,7 +178,9 @@ lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
 vertical_load_N = 78.5e3
 [output]
 patch_slots = 1
-)", "one_slot.toml"), GeneratorInfo{});
+)",
+                                                        "one_slot.toml"),
+                                     GeneratorInfo{});
   EXPECT_EQ(table.status[table.wheel_index(2, 0, 0)], CaseStatus::Converged);
   EXPECT_EQ(table.patch.present[table.patch_index(2, 0, 0, 0)], 1);
   EXPECT_NEAR(table.patch.force_vertical_N[table.patch_index(2, 0, 0, 0)], 78.5e3, 1e-9 * 78.5e3);

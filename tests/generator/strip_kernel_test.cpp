@@ -64,7 +64,8 @@ TEST(StripKernel, AsymptotesAndSlope) {
   const StripKernel& kernel = StripKernel::instance();
   const double t = 1e12;  // beyond the table: large-argument form; continuity across the table end
   EXPECT_NEAR(kernel.value(std::nextafter(StripKernel::kTableMax, 0.0)), kernel.value(StripKernel::kTableMax), 1e-9);
-  EXPECT_NEAR(kernel.value(t) - std::numbers::pi / 4 * std::asinh(t), std::numbers::pi / 8 + std::numbers::pi / 4 * std::log(2.0), 1e-9);
+  EXPECT_NEAR(kernel.value(t) - std::numbers::pi / 4 * std::asinh(t),
+              std::numbers::pi / 8 + std::numbers::pi / 4 * std::log(2.0), 1e-9);
   double h = 0, t_dh = 0;
   for (double x : {1e-4, 0.2, 3.0, 500.0}) {
     kernel.value_and_scaled_slope(x, h, t_dh);
@@ -106,8 +107,8 @@ TEST(StripKernel, InfluenceCoefficientMatchesPaperEquations11And12) {
     double a;
     int k;
   };
-  for (const Case c : {Case{0.5, 0}, Case{5.0, 0}, Case{100.0, 0}, Case{5.0, 1}, Case{60.0, 3}, Case{0.2, 10},
-                       Case{300.0, 50}}) {
+  for (const Case c :
+       {Case{0.5, 0}, Case{5.0, 0}, Case{100.0, 0}, Case{5.0, 1}, Case{60.0, 3}, Case{0.2, 10}, Case{300.0, 50}}) {
     const double d = 2.0 * b * c.k;
     const double closed = c.a * (kernel.value((d + b) / c.a) - kernel.value((d - b) / c.a));
     const double paper = paper_coefficient(c.a, b, d);

@@ -25,9 +25,8 @@ const char* const kMirroredConfig =
     "[solver]\nmode = \"wheel\"\n[axes]\n"
     "lateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 0.5e-3 }\nvertical_load_N = 78.5e3\n";
 // Wheelset, not mirrored (asymmetric axis), two loads, 19 rows.
-const char* const kAsymmetricConfig =
-    "[axes]\nlateral_displacement_m = { start = -1e-3, stop = 8e-3, step = 0.5e-3 }\n"
-    "vertical_load_N = [60e3, 90e3]\n";
+const char* const kAsymmetricConfig = "[axes]\nlateral_displacement_m = { start = -1e-3, stop = 8e-3, step = 0.5e-3 }\n"
+                                      "vertical_load_N = [60e3, 90e3]\n";
 
 std::vector<std::size_t> all_rows(std::size_t n) {
   std::vector<std::size_t> rows(n);
@@ -146,7 +145,8 @@ TEST(TableRows, PackUnpackCopyAndFail) {
   EXPECT_EQ(pack_rows(copy, rows), buffer);
   EXPECT_EQ(copy.status[copy.wheel_index(4, 0, 0)], table.status[table.wheel_index(4, 0, 0)]);
   EXPECT_EQ(copy.status[copy.wheel_index(3, 0, 0)], CaseStatus::SolverException);
-  EXPECT_EQ(copy.patch.normal_force_N[copy.patch_index(4, 0, 0, 0)], table.patch.normal_force_N[table.patch_index(4, 0, 0, 0)]);
+  EXPECT_EQ(copy.patch.normal_force_N[copy.patch_index(4, 0, 0, 0)],
+            table.patch.normal_force_N[table.patch_index(4, 0, 0, 0)]);
 }
 
 TEST(TableSweep, RowsOfAMirroredSweepMustBeMirrorClosed) {
@@ -195,7 +195,8 @@ TEST(TableShard, MergeNamesMissingDuplicateAndForeignShards) {
   TableConfig other = config;
   other.strip_width_m = 0.25e-3;
   ShardFile foreign{"foreign.h5", generate_shard(other, GeneratorInfo{}, {2, 3})};
-  EXPECT_NE(merge_error({three[0], foreign, three[2]}).find("foreign.h5: does not belong with shard1.h5: the attribute strip_width_m differs"),
+  EXPECT_NE(merge_error({three[0], foreign, three[2]})
+                .find("foreign.h5: does not belong with shard1.h5: the attribute strip_width_m differs"),
             std::string::npos);
   ShardFile table{"table.h5", generate_table(config, GeneratorInfo{})};
   EXPECT_NE(merge_error({table}).find("table.h5: not a shard file"), std::string::npos);

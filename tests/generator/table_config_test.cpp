@@ -27,7 +27,9 @@ std::string error_of(const std::string& text) {
 const std::string kAxis =
     "[axes]\nlateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\nvertical_load_N = 78.5e3\n";
 
-std::string dy_axis(const std::string& range) { return "[axes]\nlateral_displacement_m = " + range + "\nvertical_load_N = 78.5e3\n"; }
+std::string dy_axis(const std::string& range) {
+  return "[axes]\nlateral_displacement_m = " + range + "\nvertical_load_N = 78.5e3\n";
+}
 
 }  // namespace
 
@@ -53,18 +55,23 @@ TEST(TableConfig, DefaultIsTheExampleFileAndTheIssuesDefault) {
 
 TEST(TableConfig, ErrorsNameKeyAndLine) {
   EXPECT_EQ(error_of("[solver]\nspeed = 3\n" + kAxis), "c.toml:2: 'solver.speed': unknown key");
-  EXPECT_EQ(error_of("[solver]\nstrip_width_m = \"thin\"\n" + kAxis), "c.toml:2: 'solver.strip_width_m': expected a number");
+  EXPECT_EQ(error_of("[solver]\nstrip_width_m = \"thin\"\n" + kAxis),
+            "c.toml:2: 'solver.strip_width_m': expected a number");
   EXPECT_EQ(error_of("[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 0 }\n"),
             "c.toml:2: 'axes.lateral_displacement_m.step': must be positive");
   EXPECT_EQ(error_of("[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = -1e-4 }\n"),
             "c.toml:2: 'axes.lateral_displacement_m.step': must be positive");
   EXPECT_EQ(error_of("[axes]\nlateral_displacement_m = { start = 1e-3, stop = 0, step = 1e-4 }\n"),
             "c.toml:2: 'axes.lateral_displacement_m.stop': must not be below start (empty axis)");
-  EXPECT_EQ(error_of("[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-4 }\nvertical_load_N = []\n"),
+  EXPECT_EQ(error_of(
+                "[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-4 }\nvertical_load_N = []\n"),
             "c.toml:3: 'axes.vertical_load_N': empty axis");
-  EXPECT_EQ(error_of("[solver]\nmode = \"bogie\"\n" + kAxis), "c.toml:2: 'solver.mode': expected \"wheelset\" or \"wheel\", got \"bogie\"");
+  EXPECT_EQ(error_of("[solver]\nmode = \"bogie\"\n" + kAxis),
+            "c.toml:2: 'solver.mode': expected \"wheelset\" or \"wheel\", got \"bogie\"");
   EXPECT_EQ(error_of("[wheels]\nx = 1\n" + kAxis).substr(0, 20), "c.toml:1: 'wheels': ");
-  EXPECT_EQ(error_of("[profiles]\ninclination = \"1/0\"\n" + kAxis).rfind("c.toml:2: 'profiles.inclination': expected", 0), 0u);
+  EXPECT_EQ(
+      error_of("[profiles]\ninclination = \"1/0\"\n" + kAxis).rfind("c.toml:2: 'profiles.inclination': expected", 0),
+      0u);
   EXPECT_EQ(error_of("[axes\n").substr(0, 22), "c.toml:1: TOML syntax:");
   // An unknown profile names the config key and line at generation set-up.
   const TableConfig bad = parse_table_config("[profiles]\nwheel = \"no_such_wheel.whl\"\n" + kAxis, "c.toml");
@@ -88,10 +95,15 @@ TEST(TableConfig, ExampleConfigsGenerate) {
 }
 
 TEST(TableConfig, MissingLoadNamesTheKeyAndTheSection) {
-  EXPECT_EQ(error_of("[solver]\nmethod = \"mim1d\"\n[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n")
-                .rfind("c.toml:3: 'axes.vertical_load_N': missing: give the load as one of vertical_load_N [N], normal_load_N [N] or approach_m", 0),
-            0u);
-  EXPECT_EQ(error_of("[solver]\nmethod = \"mim1d\"\n"), "c.toml: 'axes.lateral_displacement_m': required ({start, stop, step})");
+  EXPECT_EQ(
+      error_of(
+          "[solver]\nmethod = \"mim1d\"\n[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, step = 1e-3 }\n")
+          .rfind("c.toml:3: 'axes.vertical_load_N': missing: give the load as one of vertical_load_N [N], "
+                 "normal_load_N [N] or approach_m",
+                 0),
+      0u);
+  EXPECT_EQ(error_of("[solver]\nmethod = \"mim1d\"\n"),
+            "c.toml: 'axes.lateral_displacement_m': required ({start, stop, step})");
   EXPECT_EQ(error_of(kAxis + "normal_load_N = 1e3\n"),
             "c.toml:4: 'axes.normal_load_N': give only one of vertical_load_N, normal_load_N, approach_m");
 }
@@ -113,19 +125,23 @@ TEST(TableConfig, AxisRangesAreValidatedBeforeAllocation) {
   EXPECT_EQ(error_of(dy_axis("{ start = 0, stop = 1e-3, step = inf }")),
             "c.toml:2: 'axes.lateral_displacement_m.step': expected a finite number");
   EXPECT_EQ(error_of(dy_axis("{ start = 0, stop = 1e-3 }")), "c.toml:2: 'axes.lateral_displacement_m': missing 'step'");
-  EXPECT_EQ(error_of(dy_axis("{ start = 0, stop = 1e-3, step = 1e-4 }") + "approach_m = nan\n").substr(0, 8), "c.toml:4");
+  EXPECT_EQ(error_of(dy_axis("{ start = 0, stop = 1e-3, step = 1e-4 }") + "approach_m = nan\n").substr(0, 8),
+            "c.toml:4");
   // 10^6 points is allowed on one axis, but 10^6 shifts x 3 loads exceeds the case limit.
   EXPECT_EQ(error_of("[axes]\nlateral_displacement_m = { start = 0, stop = 0.999999, step = 1e-6 }\n"
                      "vertical_load_N = [1e3, 2e3, 3e3]\n"),
-            "c.toml:2: 'axes': 3000000 cases (max 2000000): reduce the dy range or increase the step, or use fewer load values");
+            "c.toml:2: 'axes': 3000000 cases (max 2000000): reduce the dy range or increase the step, or use fewer "
+            "load values");
 }
 
 TEST(TableConfig, TableMemoryIsLimited) {
   // 2 10^5 shifts x 5 loads x 2 wheels x 16 slots x (20 + 2 x 1024) x 8 B = 2.6 TB.
-  const std::string big = "[axes]\nlateral_displacement_m = { start = 0, stop = 0.199999, step = 1e-6 }\n"
-                          "vertical_load_N = [1e3, 2e3, 3e3, 4e3, 5e3]\n[output]\nstrip_samples = 1024\npatch_slots = 16\n";
+  const std::string big =
+      "[axes]\nlateral_displacement_m = { start = 0, stop = 0.199999, step = 1e-6 }\n"
+      "vertical_load_N = [1e3, 2e3, 3e3, 4e3, 5e3]\n[output]\nstrip_samples = 1024\npatch_slots = 16\n";
   EXPECT_EQ(error_of(big).rfind("c.toml:2: 'axes': the table would take ", 0), 0u);
-  EXPECT_NE(error_of(big).find("reduce the dy range or increase the step, or reduce strip_samples or patch_slots"), std::string::npos);
+  EXPECT_NE(error_of(big).find("reduce the dy range or increase the step, or reduce strip_samples or patch_slots"),
+            std::string::npos);
   const TableConfig c = parse_table_config(kDefaultTableConfig, "default");
   EXPECT_DOUBLE_EQ(table_memory_bytes(c), 241.0 * 2 * 3 * (20 + 2 * 32) * 8);
   EXPECT_LT(table_memory_bytes(c), kMaxTableBytes);
@@ -134,9 +150,12 @@ TEST(TableConfig, TableMemoryIsLimited) {
 TEST(TableConfig, PatchSlotsAndStripWidthRanges) {
   EXPECT_EQ(parse_table_config(kDefaultTableConfig, "default").patch_slots, 3u);
   EXPECT_EQ(parse_table_config(kAxis + "[output]\npatch_slots = 16\n", "c.toml").patch_slots, 16u);
-  EXPECT_EQ(error_of(kAxis + "[output]\npatch_slots = 0\n"), "c.toml:5: 'output.patch_slots': expected an integer in [1, 16]");
-  EXPECT_EQ(error_of(kAxis + "[output]\npatch_slots = 2.5\n"), "c.toml:5: 'output.patch_slots': expected an integer in [1, 16]");
-  EXPECT_EQ(error_of(kAxis + "[output]\nstrip_samples = 1\n"), "c.toml:5: 'output.strip_samples': expected an integer in [2, 1024]");
+  EXPECT_EQ(error_of(kAxis + "[output]\npatch_slots = 0\n"),
+            "c.toml:5: 'output.patch_slots': expected an integer in [1, 16]");
+  EXPECT_EQ(error_of(kAxis + "[output]\npatch_slots = 2.5\n"),
+            "c.toml:5: 'output.patch_slots': expected an integer in [1, 16]");
+  EXPECT_EQ(error_of(kAxis + "[output]\nstrip_samples = 1\n"),
+            "c.toml:5: 'output.strip_samples': expected an integer in [2, 1024]");
   EXPECT_EQ(error_of("[solver]\nstrip_width_m = 1e-6\n" + kAxis),
             "c.toml:2: 'solver.strip_width_m': expected a strip width in [1e-05, 0.005] m");
   EXPECT_EQ(error_of("[solver]\nstrip_width_m = 6e-3\n" + kAxis),
@@ -145,7 +164,8 @@ TEST(TableConfig, PatchSlotsAndStripWidthRanges) {
 }
 
 TEST(TableConfig, TrackErrorsNameTheConfigLine) {
-  EXPECT_EQ(error_of("[track]\ngauge_m = 1435\n" + kAxis), "c.toml:2: 'track.gauge_m': expected a track gauge in [0.3, 3] m");
+  EXPECT_EQ(error_of("[track]\ngauge_m = 1435\n" + kAxis),
+            "c.toml:2: 'track.gauge_m': expected a track gauge in [0.3, 3] m");
   EXPECT_EQ(error_of("[track]\ngauge_m = 1.0\nflange_back_distance_m = 1.36\n" + kAxis)
                 .rfind("c.toml:3: 'track.flange_back_distance_m': expected a positive distance below the gauge", 0),
             0u);
@@ -155,7 +175,8 @@ TEST(TableConfig, TrackErrorsNameTheConfigLine) {
   const TableConfig c = parse_table_config("[track]\ngauge_height_m = 0.049\n" + kAxis, "c.toml");
   ProfileReadOptions o;
   o.inclination = 1.0 / 40.0;
-  const ProfileTable wheel = load_profile("S1002", ProfileRole::Wheel, o), rail = load_profile("UIC60", ProfileRole::Rail, o);
+  const ProfileTable wheel = load_profile("S1002", ProfileRole::Wheel, o),
+                     rail = load_profile("UIC60", ProfileRole::Rail, o);
   try {
     (void)place_profiles(c, wheel, rail);
     FAIL() << "expected an InputError";

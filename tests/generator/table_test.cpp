@@ -19,9 +19,9 @@
 #include "test_support.hpp"
 
 using namespace ctab::gen;
+using ctab::tables::CaseStatus;
 using ctab::tables::Table;
 using ctab::tables::TableStatus;
-using ctab::tables::CaseStatus;
 
 namespace {
 
@@ -137,7 +137,8 @@ TEST(Table, GridPointEqualsDirectSolve) {
       // -dy; the direct solve at (-dy, -roll) starts from inputs that differ in the last bits (FMA contraction breaks
       // exact antisymmetry of the roll) and so agrees to the solver's convergence tolerance only (6e-9 seen).
       const double tolerance = wheel_index == 0 ? 0.0 : 1e-7;
-      EXPECT_NEAR(table.patch.area_m2[k], first.area_m2, tolerance * first.area_m2) << "wheel " << wheel_index << " dy " << dy;
+      EXPECT_NEAR(table.patch.area_m2[k], first.area_m2, tolerance * first.area_m2)
+          << "wheel " << wheel_index << " dy " << dy;
       EXPECT_NEAR(table.patch.y_cop_rail_m[k], first.y_cop_rail_m, tolerance * 0.05) << "wheel " << wheel_index;
       EXPECT_NEAR(table.patch.contact_angle_rad[k], first.contact_angle_rad, tolerance) << "wheel " << wheel_index;
       EXPECT_NEAR(table.patch.max_pressure_Pa[k], first.max_pressure_Pa, tolerance * first.max_pressure_Pa);
@@ -206,7 +207,8 @@ TEST(Table, MalformedFilesAreRejectedClearly) {
       H5Ldelete(file, "/cases/roll_rad", H5P_DEFAULT);
       const hsize_t dims[1] = {7};
       const hid_t space = H5Screate_simple(1, dims, nullptr);
-      const hid_t dataset = H5Dcreate2(file, "/cases/roll_rad", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      const hid_t dataset =
+          H5Dcreate2(file, "/cases/roll_rad", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
       H5Dclose(dataset);
       H5Sclose(space);
     });
@@ -244,7 +246,8 @@ double identity_residual(const Table& table, bool vertical) {
   for (std::size_t i = 0; i < table.n_dy(); ++i)
     for (std::size_t j = 0; j < table.n_second(); ++j)
       for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel) {
-        EXPECT_EQ(table.status[table.wheel_index(i, j, wheel)], CaseStatus::Converged) << "dy " << i << " wheel " << wheel;
+        EXPECT_EQ(table.status[table.wheel_index(i, j, wheel)], CaseStatus::Converged)
+            << "dy " << i << " wheel " << wheel;
         double sum = 0.0;
         for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
           const std::size_t k = table.patch_index(i, j, wheel, slot);
@@ -286,7 +289,9 @@ lateral_displacement_m = { start = -8e-3, stop = 8e-3, step = 0.5e-3 }
 normal_load_N = [40e3, 80e3, 120e3]
 [output]
 strip_samples = 8
-)", "normal.toml"), GeneratorInfo{});
+)",
+                                                        "normal.toml"),
+                                     GeneratorInfo{});
   EXPECT_EQ(table.second_axis_name, "normal_load_N");
   EXPECT_EQ(table.second_axis_units, "N");
   EXPECT_LE(identity_residual(table, false), 1e-9);
@@ -300,7 +305,9 @@ mode = "wheel"
 [axes]
 lateral_displacement_m = { start = -7e-3, stop = 7e-3, step = 7e-3 }
 vertical_load_N = 78.5e3
-)", "flange.toml"), GeneratorInfo{});
+)",
+                                                        "flange.toml"),
+                                     GeneratorInfo{});
   const std::size_t k = table.patch_index(2, 0, 0, 1);
   ASSERT_EQ(table.patch.present[k], 1);
   EXPECT_LT(table.patch.plane_angle_rad[k], -0.5);   // steep gauge-side contact plane
@@ -329,7 +336,9 @@ lateral_displacement_m = { start = -5e-3, stop = 5e-3, step = 5e-3 }
 vertical_load_N = 78.5e3
 [output]
 patch_slots = 1
-)", "one_slot.toml"), GeneratorInfo{});
+)",
+                                                        "one_slot.toml"),
+                                     GeneratorInfo{});
   EXPECT_EQ(table.n_slots, 1u);
   EXPECT_EQ(table.status[table.wheel_index(2, 0, 0)], CaseStatus::SlotOverflow);
   EXPECT_EQ(table.patch.present[table.patch_index(2, 0, 0, 0)], 0);

@@ -29,8 +29,10 @@ class WheelRailContact : public ::testing::TestWithParam<Case> {
     CTAB_REQUIRE_SHARED();
     ProfileReadOptions o;
     o.inclination = 0.0;
-    wheel_ = new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, o));
-    rail_ = new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_UIC60_v3.prr"), ProfileRole::Rail, o));
+    wheel_ =
+        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, o));
+    rail_ =
+        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_UIC60_v3.prr"), ProfileRole::Rail, o));
     side_ = new SideGeometry(*wheel_, *rail_, TrackSetup{});
   }
   static void TearDownTestSuite() {
@@ -48,7 +50,8 @@ SideGeometry* WheelRailContact::side_ = nullptr;
 
 // p0 along the patch: ours interpolated at CONTACT's rows (by rail y), RMS over max.
 double p0_rms(const WheelContact& c, const std::string& tag) {
-  const auto table = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/strips_" + tag + ".csv"));
+  const auto table =
+      ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/strips_" + tag + ".csv"));
   const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
   std::vector<std::pair<double, double>> ours;
   for (const auto& patch : c.patches)
@@ -107,14 +110,14 @@ TEST_P(WheelRailContact, MatchesContact) {
     EXPECT_NEAR(angle * 180 / M_PI, ref_angle * 180 / M_PI, 1.0);
   }
   std::ostringstream report;
-  report << std::fixed << std::setprecision(3) << "dy " << c.dy_mm << " mm: cop " << cop * 1e3 - ref_cop << " mm, angle "
-         << (angle - ref_angle) * 180 / M_PI << " deg, area " << 100 * (area * 1e6 / ref_area - 1) << " %, pmax "
-         << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %, p0 rms " << 100 * p0_rms(contact, c.tag) << " %";
+  report << std::fixed << std::setprecision(3) << "dy " << c.dy_mm << " mm: cop " << cop * 1e3 - ref_cop
+         << " mm, angle " << (angle - ref_angle) * 180 / M_PI << " deg, area " << 100 * (area * 1e6 / ref_area - 1)
+         << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %, p0 rms " << 100 * p0_rms(contact, c.tag) << " %";
   RecordProperty("deviation", report.str());
   std::cout << report.str() << '\n';
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactCases, WheelRailContact,
-                         ::testing::Values(Case{-1.0, "m1p00"}, Case{0.0, "p0p00"}, Case{1.0, "p1p00"}, Case{2.0, "p2p00"},
-                                           Case{5.0, "p5p00"}),
+                         ::testing::Values(Case{-1.0, "m1p00"}, Case{0.0, "p0p00"}, Case{1.0, "p1p00"},
+                                           Case{2.0, "p2p00"}, Case{5.0, "p5p00"}),
                          [](const auto& param_info) { return std::string("dy_") + param_info.param.tag; });

@@ -61,7 +61,8 @@ TEST_F(WheelRailDetail, InvalidInputSaysWhy) {
   EXPECT_EQ(negative.status, SolveStatus::InvalidInput);
   EXPECT_EQ(negative.detail, "negative approach");
   EXPECT_EQ(solve(2e-3, LoadKind::VerticalForce, -1.0).detail, "negative load");
-  EXPECT_EQ(solve(std::numeric_limits<double>::quiet_NaN(), LoadKind::NormalForce, 1e3).detail, "lateral shift dy is not finite");
+  EXPECT_EQ(solve(std::numeric_limits<double>::quiet_NaN(), LoadKind::NormalForce, 1e3).detail,
+            "lateral shift dy is not finite");
   EXPECT_EQ(solve(2e-3, LoadKind::NormalForce, std::numeric_limits<double>::infinity()).detail, "load is not finite");
   const WheelContact off = solve(1.0, LoadKind::NormalForce, 78.5e3);
   EXPECT_EQ(off.status, SolveStatus::InvalidInput);
@@ -136,7 +137,8 @@ TEST_F(WheelRailDetail, WheelsetRollFailureSaysWhere) {
   EXPECT_TRUE(ok.detail.empty());
   const WheelsetPose off = rigid_wheelset_pose(*side_, *side_, 0.5);
   EXPECT_FALSE(off.converged);
-  EXPECT_EQ(off.detail, "wheelset roll: a wheel does not reach its rail at dy = 0.5 m (lateral shift beyond the profiles)");
+  EXPECT_EQ(off.detail,
+            "wheelset roll: a wheel does not reach its rail at dy = 0.5 m (lateral shift beyond the profiles)");
   const RigidContactRow row = rigid_contact(*side_, *side_, 0.5, ContactMode::Wheelset);
   EXPECT_FALSE(row.converged);
   EXPECT_EQ(row.detail, off.detail);

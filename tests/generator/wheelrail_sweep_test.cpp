@@ -31,7 +31,8 @@ void sweep(ContactMode mode) {
     const RigidContactRow row = rigid_contact(side, side, dy, mode);
     rows.push_back(row);
     ASSERT_TRUE(std::isfinite(row.roll_rad) && std::isfinite(row.right.wheel_s_m)) << "dy " << dy;
-    const WheelContact c = solve_wheel_contact(side, dy, row.roll_rad, E_star, LoadKind::VerticalForce, 78.5e3, WheelRailOptions{});
+    const WheelContact c =
+        solve_wheel_contact(side, dy, row.roll_rad, E_star, LoadKind::VerticalForce, 78.5e3, WheelRailOptions{});
     ASSERT_TRUE(std::isfinite(c.normal_force_N) && std::isfinite(c.vertical_approach_m)) << "dy " << dy;
     if (is_success(c.status)) {
       ++solved;

@@ -78,7 +78,7 @@ class LookupAccuracy : public ::testing::Test {
     for (int k = 0; k < 1000; ++k) {
       const double dy = uniform(random);
       const gen::CaseSolution solved = gen::solve_table_case(*setup_, dy, load);
-      direct.allocate();  // store_case_wheel expects empty slots
+      direct.allocate();                                                  // store_case_wheel expects empty slots
       gen::store_case_wheel(direct, *setup_, 0, 0, 0, solved.wheels[0]);  // right wheel (left: its mirror image)
       ctab_location where;
       table.prelookup(dy, load, where);
@@ -100,7 +100,9 @@ class LookupAccuracy : public ::testing::Test {
           if (!lookup_has_patch_nearby && !present) continue;  // no patch anywhere near: nothing to compare
           ++out.jump_queries;
           out.jump_presence_mismatch += present != found;
-          out.jump_force_of_wheel.add(std::fabs(r.patch[s].q[CTAB_NORMAL_FORCE_N] - direct.patch.normal_force_N[s]) / total, dy);
+          out.jump_force_of_wheel.add(std::fabs(r.patch[s].q[CTAB_NORMAL_FORCE_N] - direct.patch.normal_force_N[s]) /
+                                          total,
+                                      dy);
           continue;
         }
         out.smooth_presence_mismatch += present != found;
@@ -109,21 +111,25 @@ class LookupAccuracy : public ::testing::Test {
         errors.area.add(std::fabs(r.patch[s].q[CTAB_AREA_M2] / direct.patch.area_m2[s] - 1.0), dy);
         errors.point.add(std::max({std::fabs(r.patch[s].q[CTAB_Y_WHEEL_M] - direct.patch.y_wheel_m[s]),
                                    std::fabs(r.patch[s].q[CTAB_Y_RAIL_M] - direct.patch.y_rail_m[s]),
-                                   std::fabs(r.patch[s].q[CTAB_Y_COP_RAIL_M] - direct.patch.y_cop_rail_m[s])}), dy);
+                                   std::fabs(r.patch[s].q[CTAB_Y_COP_RAIL_M] - direct.patch.y_cop_rail_m[s])}),
+                         dy);
       }
     }
     std::printf("%s, default table (dy step 0.1 mm), 1000 random dy, right wheel, cells without a jump:\n",
                 mode == CTAB_PCHIP ? "PCHIP" : "linear");
-    const std::pair<Errors*, const char*> groups[] = {
-        {&out.tread_only, "tread patch only"}, {&out.two_patches, "tread and flange"}, {&out.flange_only, "flange patch only"}};
+    const std::pair<Errors*, const char*> groups[] = {{&out.tread_only, "tread patch only"},
+                                                      {&out.two_patches, "tread and flange"},
+                                                      {&out.flange_only, "flange patch only"}};
     for (const auto& [errors, label] : groups) {
       std::printf("  %s:\n", label);
       errors->force.print("normal force", "%", 100.0);
       errors->area.print("area", "%", 100.0);
       errors->point.print("contact points (worst)", "mm", 1e3);
     }
-    std::printf("  cells with a jump (slot-queries with a patch nearby): %zu; presence differs from the direct solve in "
-                "%zu (elsewhere %zu)\n", out.jump_queries, out.jump_presence_mismatch, out.smooth_presence_mismatch);
+    std::printf(
+        "  cells with a jump (slot-queries with a patch nearby): %zu; presence differs from the direct solve in "
+        "%zu (elsewhere %zu)\n",
+        out.jump_queries, out.jump_presence_mismatch, out.smooth_presence_mismatch);
     out.jump_force_of_wheel.print("|force error| / wheel load", "%", 100.0);
     return out;
   }

@@ -42,7 +42,8 @@ std::vector<unsigned char> parse_c_header(const std::string& text) {
   std::istringstream in(text.substr(open + 5, close - open - 5));
   std::string token;
   while (std::getline(in, token, ','))
-    if (token.find("0x") != std::string::npos) bytes.push_back(static_cast<unsigned char>(std::stoul(token, nullptr, 16)));
+    if (token.find("0x") != std::string::npos)
+      bytes.push_back(static_cast<unsigned char>(std::stoul(token, nullptr, 16)));
   return bytes;
 }
 
@@ -139,7 +140,8 @@ TEST(LookupBlob, SinglePrecisionHalvesTheValuesAndStaysClose) {
   for (std::size_t i = 0; i < a.size(); ++i)
     for (int s = 0; s < 3; ++s) {
       EXPECT_EQ(a[i].patch[s].present, b[i].patch[s].present);
-      EXPECT_NEAR(a[i].patch[s].q[CTAB_NORMAL_FORCE_N], b[i].patch[s].q[CTAB_NORMAL_FORCE_N], 1e-6 * std::fabs(a[i].patch[s].q[CTAB_NORMAL_FORCE_N]) + 1e-12);
+      EXPECT_NEAR(a[i].patch[s].q[CTAB_NORMAL_FORCE_N], b[i].patch[s].q[CTAB_NORMAL_FORCE_N],
+                  1e-6 * std::fabs(a[i].patch[s].q[CTAB_NORMAL_FORCE_N]) + 1e-12);
     }
 }
 

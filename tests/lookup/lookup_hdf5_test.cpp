@@ -41,7 +41,8 @@ std::vector<unsigned char> parse_c_header(const std::string& text) {
   std::istringstream in(text.substr(open + 5, close - open - 5));
   std::string token;
   while (std::getline(in, token, ','))
-    if (token.find("0x") != std::string::npos) bytes.push_back(static_cast<unsigned char>(std::stoul(token, nullptr, 16)));
+    if (token.find("0x") != std::string::npos)
+      bytes.push_back(static_cast<unsigned char>(std::stoul(token, nullptr, 16)));
   return bytes;
 }
 

@@ -31,9 +31,7 @@ ctab_result query(const Table& table, double dy, double second, int wheel) {
   return result;
 }
 
-double quantity(const ctab_patch& patch, std::size_t q) {
-  return patch.q[q];
-}
+double quantity(const ctab_patch& patch, std::size_t q) { return patch.q[q]; }
 
 TEST(LookupQuery, LinearDataIsReproducedOffGridInBothModes) {
   for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
@@ -84,8 +82,8 @@ TEST(LookupQuery, MovingPatchIsNotBlendedAcrossItsJump) {
 TEST(LookupQuery, FailedNeighbourIsNeverUsed) {
   const TableData data = make_synthetic({.failed_case = true});  // right wheel fails at -8 mm
   const Table table = load(data);
-  EXPECT_EQ(table.rule(3, 0, 0, 0), CellRule::LowerOnly);   // cell (-9, -8)
-  EXPECT_EQ(table.rule(4, 0, 0, 0), CellRule::UpperOnly);   // cell (-8, -7)
+  EXPECT_EQ(table.rule(3, 0, 0, 0), CellRule::LowerOnly);  // cell (-9, -8)
+  EXPECT_EQ(table.rule(4, 0, 0, 0), CellRule::UpperOnly);  // cell (-8, -7)
   for (const double dy : {-8.3e-3, -7.9e-3}) {
     const ctab_result r = query(table, dy, 0.0, 0);
     EXPECT_EQ(r.patch[0].present, 1) << dy;

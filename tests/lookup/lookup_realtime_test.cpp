@@ -49,7 +49,8 @@ namespace ctab::lookup {
 namespace {
 
 ctab_table* open_synthetic(ctab_interpolation interpolation, bool single, std::size_t n_second) {
-  const std::vector<unsigned char> blob = write_blob(test::make_synthetic({.n_second = n_second, .failed_case = true}), single);
+  const std::vector<unsigned char> blob =
+      write_blob(test::make_synthetic({.n_second = n_second, .failed_case = true}), single);
   const ctab_open_options options{interpolation, single ? 1 : 0};
   ctab_table* table = nullptr;
   EXPECT_EQ(ctab_table_open_memory(blob.data(), blob.size(), &options, &table), CTAB_OK);
@@ -92,17 +93,20 @@ TEST(LookupRealtime, ConcurrentQueriesEqualSequentialOnes) {
     std::uniform_real_distribution<double> dy(-12.5e-3, 12.5e-3), load(50e3, 110e3);
     for (std::size_t i = 0; i < kQueries; ++i) dys[i] = dy(random), loads[i] = load(random);
     std::vector<ctab_result> sequential(kQueries);
-    for (std::size_t i = 0; i < kQueries; ++i) ctab_query(table, dys[i], loads[i], static_cast<std::int32_t>(i % 2), &sequential[i]);
+    for (std::size_t i = 0; i < kQueries; ++i)
+      ctab_query(table, dys[i], loads[i], static_cast<std::int32_t>(i % 2), &sequential[i]);
     std::vector<std::vector<ctab_result>> parallel(kThreads, std::vector<ctab_result>(kQueries));
     std::vector<std::thread> threads;
     for (std::size_t t = 0; t < kThreads; ++t)
       threads.emplace_back([&, t] {
-        for (std::size_t i = 0; i < kQueries; ++i) ctab_query(table, dys[i], loads[i], static_cast<std::int32_t>(i % 2), &parallel[t][i]);
+        for (std::size_t i = 0; i < kQueries; ++i)
+          ctab_query(table, dys[i], loads[i], static_cast<std::int32_t>(i % 2), &parallel[t][i]);
       });
     for (std::thread& thread : threads) thread.join();
     for (std::size_t t = 0; t < kThreads; ++t)
       for (std::size_t i = 0; i < kQueries; ++i)
-        ASSERT_EQ(std::memcmp(&parallel[t][i], &sequential[i], sizeof(ctab_result)), 0) << "thread " << t << " query " << i;
+        ASSERT_EQ(std::memcmp(&parallel[t][i], &sequential[i], sizeof(ctab_result)), 0)
+            << "thread " << t << " query " << i;
     ctab_table_close(table);
   }
 }

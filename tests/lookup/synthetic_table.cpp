@@ -31,7 +31,8 @@ TableData make_synthetic(const SyntheticOptions& o) {
           const std::size_t p = data.patch_index(i, j, w, s);
           data.present[p] = present[s] ? 1 : 0;
           if (!present[s]) continue;
-          for (std::size_t q = 0; q < kQuantities; ++q) data.quantities[p * kQuantities + q] = synthetic_value(q, s, w, dy, second);
+          for (std::size_t q = 0; q < kQuantities; ++q)
+            data.quantities[p * kQuantities + q] = synthetic_value(q, s, w, dy, second);
           if (s == 2 && dy >= o.moves_at_m) data.quantities[p * kQuantities + 11] += 5e-3;  // y_rail_m moves
           for (std::size_t k = 0; k < o.strip_samples; ++k) {
             data.strip_half_length_m[p * o.strip_samples + k] = 1e-3 * (1.0 + static_cast<double>(k)) * (1.0 + dy);
@@ -41,11 +42,11 @@ TableData make_synthetic(const SyntheticOptions& o) {
         // Jumps: the flange appears, the spare slot moves (in the cells containing those points).
         const double next = dy + o.dy_step_m;
         if (i + 1 < n_dy && dy < flange_from && next >= flange_from)
-          data.jumps.push_back({static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(w), 1,
-                                JumpKind::Appears});
+          data.jumps.push_back({static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i),
+                                static_cast<std::uint8_t>(w), 1, JumpKind::Appears});
         if (i + 1 < n_dy && dy < o.moves_at_m && next >= o.moves_at_m)
-          data.jumps.push_back({static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(w), 2,
-                                JumpKind::Moves});
+          data.jumps.push_back({static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i),
+                                static_cast<std::uint8_t>(w), 2, JumpKind::Moves});
       }
     }
   if (o.failed_case) {

@@ -10,11 +10,11 @@ namespace ctab::lookup::test {
 
 struct SyntheticOptions {
   double dy_min_m = -12e-3, dy_max_m = 12e-3, dy_step_m = 1e-3;
-  std::size_t n_second = 1;        //!< vertical loads 60, 80, 100 ... kN
+  std::size_t n_second = 1;  //!< vertical loads 60, 80, 100 ... kN
   std::size_t strip_samples = 5;
-  double flange_from_m = 6.5e-3;   //!< flange slot present for dy >= this (not a grid point: jump inside a cell)
-  double moves_at_m = -4.5e-3;     //!< spare slot's y_rail jumps by 5 mm here
-  bool failed_case = false;        //!< right wheel at dy = -8 mm (first row) fails: MaxIterations
+  double flange_from_m = 6.5e-3;         //!< flange slot present for dy >= this (not a grid point: jump inside a cell)
+  double moves_at_m = -4.5e-3;           //!< spare slot's y_rail jumps by 5 mm here
+  bool failed_case = false;              //!< right wheel at dy = -8 mm (first row) fails: MaxIterations
   bool second_row_flange_later = false;  //!< with n_second > 1: rows >= 1 get the flange 1 mm later
 };
 

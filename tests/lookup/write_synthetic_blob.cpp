@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   if (argc == 4) {
     const std::string header = blob_c_header(blob, "ctab_synthetic_blob");
     out = std::fopen(argv[3], "wb");
-    if (out == nullptr || std::fwrite(header.data(), 1, header.size(), out) != header.size() || std::fclose(out) != 0) return 1;
+    if (out == nullptr || std::fwrite(header.data(), 1, header.size(), out) != header.size() || std::fclose(out) != 0)
+      return 1;
   }
   ctab_table* table = nullptr;
   if (ctab_table_open_memory(blob.data(), blob.size(), nullptr, &table) != CTAB_OK) return 1;

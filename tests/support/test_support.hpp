@@ -16,9 +16,9 @@ inline bool shared_dir_present() { return std::filesystem::is_directory(CTAB_SHA
 
 //! Skips the current test (or, in SetUpTestSuite, the whole suite) when ../shared is absent: a clone without
 //! the reference data still runs everything else. Such test executables carry the CTest label `shared`.
-#define CTAB_REQUIRE_SHARED()                                                                           \
-  do {                                                                                                  \
-    if (!::ctab::test::shared_dir_present()) GTEST_SKIP() << "no shared data at " CTAB_SHARED_DIR;       \
+#define CTAB_REQUIRE_SHARED()                                                                      \
+  do {                                                                                             \
+    if (!::ctab::test::shared_dir_present()) GTEST_SKIP() << "no shared data at " CTAB_SHARED_DIR; \
   } while (false)
 
 //! Path of a file under ../shared (reference data; tests only).

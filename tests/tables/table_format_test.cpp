@@ -139,7 +139,8 @@ void replace_attribute(hid_t file, const char* name, hid_t file_type, hid_t memo
 
 void expect_failure(const TableResult& r, TableStatus status, std::initializer_list<const char*> words) {
   EXPECT_EQ(r.status, status) << r.message;
-  for (const char* word : words) EXPECT_NE(r.message.find(word), std::string::npos) << "'" << word << "' not in: " << r.message;
+  for (const char* word : words)
+    EXPECT_NE(r.message.find(word), std::string::npos) << "'" << word << "' not in: " << r.message;
 }
 
 template <class T>
@@ -188,7 +189,8 @@ TEST(TableFormat, DetectJumpsFindsAppearAndMove) {
   std::size_t appears = 0;
   for (const Jump& j : t.jumps) appears += j.kind == JumpKind::Appears && j.slot == 1 && j.i_dy == 2;
   EXPECT_EQ(appears, 4u);
-  // Moving the tread contact point by 1.5 mm between dy[4] and dy[5] (threshold max(1 mm, 10 steps) = 10 mm here): no jump.
+  // Moving the tread contact point by 1.5 mm between dy[4] and dy[5] (threshold max(1 mm, 10 steps) = 10 mm here): no
+  // jump.
   const std::size_t k = t.patch_index(5, 0, 0, 0);
   t.patch.y_rail_m[k] += 1.5e-3;
   EXPECT_EQ(detect_jumps(t).size(), t.jumps.size());
@@ -196,7 +198,8 @@ TEST(TableFormat, DetectJumpsFindsAppearAndMove) {
   const auto jumps = detect_jumps(t);
   ASSERT_EQ(jumps.size(), t.jumps.size() + 1);
   bool moved = false;
-  for (const Jump& j : jumps) moved |= j.kind == JumpKind::Moves && j.i_dy == 4 && j.slot == 0 && j.wheel == 0 && j.i_second == 0;
+  for (const Jump& j : jumps)
+    moved |= j.kind == JumpKind::Moves && j.i_dy == 4 && j.slot == 0 && j.wheel == 0 && j.i_second == 0;
   EXPECT_TRUE(moved);
 }
 
@@ -249,10 +252,12 @@ TEST(TableFormat, CorruptContentsAreRejectedWithFileDatasetAndIndex) {
   const std::uint8_t presence7 = 7;
   // Index of (i_dy 1, i_2 0, wheel 0, slot 0) = 4 * ... in the per-slot arrays: ((1*2+0)*2+0)*3+0 = 12.
   expect_failure(read_edited("nan.h5", [&](hid_t f) { poke(f, "/patches/normal_force_N", 12, &nan); }),
-                 TableStatus::InvalidContent, {"tables_nan.h5", "/patches/normal_force_N", "i_dy=1, i_2=0, wheel=0, slot=0", "finite"});
+                 TableStatus::InvalidContent,
+                 {"tables_nan.h5", "/patches/normal_force_N", "i_dy=1, i_2=0, wheel=0, slot=0", "finite"});
   expect_failure(read_edited("negative.h5", [&](hid_t f) { poke(f, "/patches/normal_force_N", 12, &negative); }),
                  TableStatus::InvalidContent, {"/patches/normal_force_N", "i_dy=1", "> 0"});
-  expect_failure(read_edited("negative_strip.h5", [&](hid_t f) { poke(f, "/patches/strip_peak_pressure_Pa", 12 * 4 + 1, &negative); }),
+  expect_failure(read_edited("negative_strip.h5",
+                             [&](hid_t f) { poke(f, "/patches/strip_peak_pressure_Pa", 12 * 4 + 1, &negative); }),
                  TableStatus::InvalidContent, {"/patches/strip_peak_pressure_Pa", "sample=1", ">= 0"});
   expect_failure(read_edited("status7.h5", [&](hid_t f) { poke(f, "/wheels/status", 3, &status7); }),
                  TableStatus::InvalidContent, {"/wheels/status", "i_dy=0, i_2=1, wheel=1", "unknown case status 7"});
@@ -263,50 +268,68 @@ TEST(TableFormat, CorruptContentsAreRejectedWithFileDatasetAndIndex) {
                  TableStatus::InvalidContent, {"/patches/area_m2", "slot=2", "empty slot"});
   // A patch in a failed case.
   const std::uint8_t one = 1;
-  expect_failure(read_edited("failed_with_patch.h5", [&](hid_t f) {
-                   poke(f, "/patches/present", ((2 * 2 + 1) * 2 + 1) * 3 + 2, &one);  // also checked before: area 0 there
-                 }),
+  expect_failure(read_edited("failed_with_patch.h5",
+                             [&](hid_t f) {
+                               poke(f, "/patches/present", ((2 * 2 + 1) * 2 + 1) * 3 + 2,
+                                    &one);  // also checked before: area 0 there
+                             }),
                  TableStatus::InvalidContent, {"/patches/"});
   const std::uint32_t far = 99;
-  expect_failure(read_edited("jump_index.h5", [&](hid_t f) {
-                   const hid_t d = H5Dopen2(f, "/jumps", H5P_DEFAULT);
-                   const hid_t memory = H5Tcreate(H5T_COMPOUND, sizeof far);
-                   H5Tinsert(memory, "i_dy", 0, H5T_NATIVE_UINT32);
-                   const hid_t space = H5Dget_space(d);
-                   const hsize_t start = 0, count = 1;
-                   H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
-                   const hid_t memory_space = H5Screate_simple(1, &count, nullptr);
-                   H5Dwrite(d, memory, memory_space, space, H5P_DEFAULT, &far);
-                   H5Sclose(memory_space);
-                   H5Sclose(space);
-                   H5Tclose(memory);
-                   H5Dclose(d);
-                 }),
+  expect_failure(read_edited("jump_index.h5",
+                             [&](hid_t f) {
+                               const hid_t d = H5Dopen2(f, "/jumps", H5P_DEFAULT);
+                               const hid_t memory = H5Tcreate(H5T_COMPOUND, sizeof far);
+                               H5Tinsert(memory, "i_dy", 0, H5T_NATIVE_UINT32);
+                               const hid_t space = H5Dget_space(d);
+                               const hsize_t start = 0, count = 1;
+                               H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
+                               const hid_t memory_space = H5Screate_simple(1, &count, nullptr);
+                               H5Dwrite(d, memory, memory_space, space, H5P_DEFAULT, &far);
+                               H5Sclose(memory_space);
+                               H5Sclose(space);
+                               H5Tclose(memory);
+                               H5Dclose(d);
+                             }),
                  TableStatus::InvalidContent, {"/jumps[0]"});
 }
 
 TEST(TableFormat, BadAttributesAreRejectedBeforeAllocating) {
   const std::int64_t huge = 200000, zero = 0, one = 1;
   const double one_and_a_half = 1.5, one_float = 1.0;
-  expect_failure(read_edited("samples.h5", [&](hid_t f) { replace_attribute(f, "strip_samples", H5T_STD_I64LE, H5T_NATIVE_INT64, &huge); }),
+  expect_failure(read_edited("samples.h5",
+                             [&](hid_t f) {
+                               replace_attribute(f, "strip_samples", H5T_STD_I64LE, H5T_NATIVE_INT64, &huge);
+                             }),
                  TableStatus::InvalidContent, {"tables_samples.h5", "strip_samples = 200000", "[2, 4096]"});
-  expect_failure(read_edited("slots.h5", [&](hid_t f) { replace_attribute(f, "n_slots", H5T_STD_I64LE, H5T_NATIVE_INT64, &zero); }),
+  expect_failure(read_edited("slots.h5",
+                             [&](hid_t f) { replace_attribute(f, "n_slots", H5T_STD_I64LE, H5T_NATIVE_INT64, &zero); }),
                  TableStatus::InvalidContent, {"n_slots = 0"});
-  expect_failure(read_edited("float_samples.h5", [&](hid_t f) { replace_attribute(f, "strip_samples", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &one_and_a_half); }),
+  expect_failure(read_edited("float_samples.h5",
+                             [&](hid_t f) {
+                               replace_attribute(f, "strip_samples", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                                                 &one_and_a_half);
+                             }),
                  TableStatus::InvalidContent, {"strip_samples", "integer"});
-  expect_failure(read_edited("version15.h5", [&](hid_t f) { replace_attribute(f, "schema_version", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &one_and_a_half); }),
+  expect_failure(read_edited("version15.h5",
+                             [&](hid_t f) {
+                               replace_attribute(f, "schema_version", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                                                 &one_and_a_half);
+                             }),
                  TableStatus::InvalidContent, {"schema_version", "1.5", "integer"});
   for (const bool as_float : {true, false}) {
     const auto r = read_edited("schema1.h5", [&](hid_t f) {
       if (as_float)
         replace_attribute(f, "schema_version", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &one_float);  // as schema 1 wrote it
-      else
-        replace_attribute(f, "schema_version", H5T_STD_I64LE, H5T_NATIVE_INT64, &one);
+      else replace_attribute(f, "schema_version", H5T_STD_I64LE, H5T_NATIVE_INT64, &one);
     });
-    expect_failure(r, TableStatus::WrongSchemaVersion, {"schema 1 table: regenerate it with this ctab: ctab generate CONFIG -o FILE"});
+    expect_failure(r, TableStatus::WrongSchemaVersion,
+                   {"schema 1 table: regenerate it with this ctab: ctab generate CONFIG -o FILE"});
   }
   const std::int64_t three = 3;
-  expect_failure(read_edited("version3.h5", [&](hid_t f) { replace_attribute(f, "schema_version", H5T_STD_I64LE, H5T_NATIVE_INT64, &three); }),
+  expect_failure(read_edited("version3.h5",
+                             [&](hid_t f) {
+                               replace_attribute(f, "schema_version", H5T_STD_I64LE, H5T_NATIVE_INT64, &three);
+                             }),
                  TableStatus::WrongSchemaVersion, {"schema version 3"});
 }
 
@@ -315,13 +338,15 @@ TEST(TableFormat, MissingAndMisshapenDatasets) {
                  TableStatus::MissingDataset, {"/patches/plane_angle_rad"});
   expect_failure(read_edited("missing_jumps.h5", [](hid_t f) { H5Ldelete(f, "/jumps", H5P_DEFAULT); }),
                  TableStatus::MissingDataset, {"/jumps"});
-  expect_failure(read_edited("shape.h5", [](hid_t f) {
-                   H5Ldelete(f, "/patches/force_lateral_N", H5P_DEFAULT);
-                   const hsize_t dims[4] = {6, 2, 2, 4};
-                   const hid_t space = H5Screate_simple(4, dims, nullptr);
-                   H5Dclose(H5Dcreate2(f, "/patches/force_lateral_N", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-                   H5Sclose(space);
-                 }),
+  expect_failure(read_edited("shape.h5",
+                             [](hid_t f) {
+                               H5Ldelete(f, "/patches/force_lateral_N", H5P_DEFAULT);
+                               const hsize_t dims[4] = {6, 2, 2, 4};
+                               const hid_t space = H5Screate_simple(4, dims, nullptr);
+                               H5Dclose(H5Dcreate2(f, "/patches/force_lateral_N", H5T_IEEE_F64LE, space, H5P_DEFAULT,
+                                                   H5P_DEFAULT, H5P_DEFAULT));
+                               H5Sclose(space);
+                             }),
                  TableStatus::WrongShape, {"/patches/force_lateral_N", "(6, 2, 2, 4)", "expected (6, 2, 2, 3)"});
   Table t;
   EXPECT_EQ(read_table(temp_path("does_not_exist.h5"), t).status, TableStatus::CannotOpen);

@@ -25,11 +25,12 @@ NormalSolution analyn_on_grid(const StripGrid& grid, double E_star_Pa, double ap
       const double A = std::max(grid.A_per_m[i], kAnalynMinCurvature_per_m);  // step 2
       const double B = std::max(grid.B_per_m[i], kAnalynMinCurvature_per_m);
       HertzCoefficients c;
-      if (!hertz_coefficients_tabulated(A, B, c)) return status_solution(SolveStatus::NumericalFailure, kMethod, approach_m);
+      if (!hertz_coefficients_tabulated(A, B, c))
+        return status_solution(SolveStatus::NumericalFailure, kMethod, approach_m);
       const double alpha1 = c.r * (1.0 + B / A) / (c.m * c.m), beta1 = c.r * (1.0 + A / B) / (c.n * c.n);  // step 3
-      const double penetration = (approach_m - h_k) - beta1 * (grid.h_m[i] - h_k);                       // step 4
+      const double penetration = (approach_m - h_k) - beta1 * (grid.h_m[i] - h_k);                         // step 4
       if (!(penetration > 0.0)) continue;
-      half_length[i] = std::sqrt(penetration / (alpha1 * A));                                           // step 5
+      half_length[i] = std::sqrt(penetration / (alpha1 * A));                                             // step 5
       p0[i] = 2.0 * E_star_Pa / (std::numbers::pi * c.m * c.n) * std::sqrt(penetration * (A + B) / c.r);  // step 6
     }
   }

@@ -115,7 +115,8 @@ class Bem2dRun {
     solution_.status = cg.status;
     solution_.residual = cg.residual;
     solution_.approach_m = cg.approach;
-    if (load && cg.status == SolveStatus::Converged && cg.approach >= covered) solution_.status = SolveStatus::ZoneTruncated;
+    if (load && cg.status == SolveStatus::Converged && cg.approach >= covered)
+      solution_.status = SolveStatus::ZoneTruncated;
     if (cg.status == SolveStatus::Converged || cg.status == SolveStatus::MaxIterations) {
       bem2d::assemble_solution(grid_, pressure_, solution_);
       if (cg.status == SolveStatus::Converged && bem2d::loaded_at_border(grid_, pressure_))

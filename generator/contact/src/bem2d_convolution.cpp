@@ -118,7 +118,8 @@ void InfluenceConvolution::Impl::inverse_rows(std::vector<double>& u) {
   u.resize(nx * ny);
   for (std::size_t j = 0; j < ny; ++j) {
     fft.inv(row.data(), &spectrum[j * hx], static_cast<Eigen::Index>(px));
-    std::copy(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(nx), u.begin() + static_cast<std::ptrdiff_t>(j * nx));
+    std::copy(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(nx),
+              u.begin() + static_cast<std::ptrdiff_t>(j * nx));
   }
 }
 

@@ -18,8 +18,9 @@ struct GapSample {
 // (exact for cubics; CONTACT-like datum), A linearly. y must lie inside the data.
 GapSample sample_gap(const GapProfile& gap, double y) {
   const auto upper = std::upper_bound(gap.y_m.begin(), gap.y_m.end(), y);
-  const std::size_t k = std::min<std::size_t>(
-      static_cast<std::size_t>(std::max<std::ptrdiff_t>(upper - gap.y_m.begin() - 1, 0)), gap.size() - 2);
+  const std::size_t k =
+      std::min<std::size_t>(static_cast<std::size_t>(std::max<std::ptrdiff_t>(upper - gap.y_m.begin() - 1, 0)),
+                            gap.size() - 2);
   const double step = gap.y_m[k + 1] - gap.y_m[k], t = (y - gap.y_m[k]) / step;
   const double M0 = 2.0 * gap.B_per_m[k], M1 = 2.0 * gap.B_per_m[k + 1];
   GapSample s;

@@ -16,12 +16,12 @@ namespace ctab::gen::bem2d {
 //! Elements covering { h(y) + A(y) x^2 < covered_approach } plus one element on every side (within the gap data).
 struct ElementGrid {
   std::size_t nx = 0, ny = 0;
-  double dx = 0.0, dy = 0.0;           // element size [m]
-  double x0 = 0.0, y0 = 0.0;           // centre of element (0, 0) [m]
-  double covered_approach = 0.0;       // approach [m] up to which the grid holds every element that can touch
-  bool first_row_at_data_end = false;  // no further row below the first one fits inside the gap data
-  bool last_row_at_data_end = false;   // ... above the last one
-  std::vector<double> h;               // undeformed separation at the element centres [m], ny x nx
+  double dx = 0.0, dy = 0.0;             // element size [m]
+  double x0 = 0.0, y0 = 0.0;             // centre of element (0, 0) [m]
+  double covered_approach = 0.0;         // approach [m] up to which the grid holds every element that can touch
+  bool first_row_at_data_end = false;    // no further row below the first one fits inside the gap data
+  bool last_row_at_data_end = false;     // ... above the last one
+  std::vector<double> h;                 // undeformed separation at the element centres [m], ny x nx
   std::vector<unsigned char> potential;  // 1 where h < covered_approach (the elements the solver may load)
 };
 

@@ -66,7 +66,8 @@ void assemble_solution(const ElementGrid& grid, const std::vector<double>& press
 bool loaded_at_border(const ElementGrid& grid, const std::vector<double>& pressure) {
   const auto row_loaded = [&](std::size_t j) {
     return std::any_of(pressure.begin() + static_cast<std::ptrdiff_t>(j * grid.nx),
-                       pressure.begin() + static_cast<std::ptrdiff_t>((j + 1) * grid.nx), [](double v) { return v > 0.0; });
+                       pressure.begin() + static_cast<std::ptrdiff_t>((j + 1) * grid.nx),
+                       [](double v) { return v > 0.0; });
   };
   if (grid.first_row_at_data_end && row_loaded(0)) return true;
   if (grid.last_row_at_data_end && row_loaded(grid.ny - 1)) return true;

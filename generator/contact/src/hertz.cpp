@@ -101,12 +101,10 @@ class CoefficientTable {
     for (std::size_t k = 0; k < count; ++k)
       for (std::size_t c = 0; c < 3; ++c) {
         auto v = [&](std::size_t i) { return values_[i][c]; };
-        if (k >= 2 && k + 2 < count)
-          slopes_[k][c] = (v(k - 2) - 8 * v(k - 1) + 8 * v(k + 1) - v(k + 2)) / (12 * h);
+        if (k >= 2 && k + 2 < count) slopes_[k][c] = (v(k - 2) - 8 * v(k - 1) + 8 * v(k + 1) - v(k + 2)) / (12 * h);
         else if (k < 2)
           slopes_[k][c] = (-25 * v(k) + 48 * v(k + 1) - 36 * v(k + 2) + 16 * v(k + 3) - 3 * v(k + 4)) / (12 * h);
-        else
-          slopes_[k][c] = (25 * v(k) - 48 * v(k - 1) + 36 * v(k - 2) - 16 * v(k - 3) + 3 * v(k - 4)) / (12 * h);
+        else slopes_[k][c] = (25 * v(k) - 48 * v(k - 1) + 36 * v(k - 2) - 16 * v(k - 3) + 3 * v(k - 4)) / (12 * h);
       }
   }
   bool lookup(double x, HertzCoefficients& out) const {

@@ -54,8 +54,13 @@ double lateral_curvature(const GapProfile& gap, const DeepestPoint& point, doubl
 
 DeepestPoint deepest_point(const GapProfile& gap) {
   const auto k = static_cast<std::size_t>(std::min_element(gap.h_m.begin(), gap.h_m.end()) - gap.h_m.begin());
-  return {k,           gap.y_m[k], gap.h_m[k], gap.A_per_m[k], std::max(gap.B_per_m[k], gap.A_per_m[k] / kCurvatureRatioLimit),
-          gap.y_m.front(), gap.y_m.back()};
+  return {k,
+          gap.y_m[k],
+          gap.h_m[k],
+          gap.A_per_m[k],
+          std::max(gap.B_per_m[k], gap.A_per_m[k] / kCurvatureRatioLimit),
+          gap.y_m.front(),
+          gap.y_m.back()};
 }
 
 NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point, double strip_width_m,
@@ -93,7 +98,8 @@ NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point
 
 }  // namespace
 
-NormalSolution solve_hertz_for_approach(const GapProfile& gap, double E_star_Pa, double strip_width_m, double approach_m) {
+NormalSolution solve_hertz_for_approach(const GapProfile& gap, double E_star_Pa, double strip_width_m,
+                                        double approach_m) {
   const auto start = std::chrono::steady_clock::now();
   DeepestPoint point = deepest_point(gap);
   HertzContact contact;
@@ -106,7 +112,8 @@ NormalSolution solve_hertz_for_approach(const GapProfile& gap, double E_star_Pa,
   return make_patch(contact, point, strip_width_m, start);
 }
 
-NormalSolution solve_hertz_for_load(const GapProfile& gap, double E_star_Pa, double strip_width_m, double normal_force_N) {
+NormalSolution solve_hertz_for_load(const GapProfile& gap, double E_star_Pa, double strip_width_m,
+                                    double normal_force_N) {
   const auto start = std::chrono::steady_clock::now();
   DeepestPoint point = deepest_point(gap);
   HertzContact contact = hertz_from_load(point.A, point.B, E_star_Pa, normal_force_N);

@@ -43,7 +43,8 @@ NormalSolution kp_on_grid(const StripGrid& grid, double E_star_Pa, double approa
   }
   for (std::size_t i = 0; i < n; ++i)
     if (virtual_depth[i] > 0.0) half_length[i] = std::sqrt(virtual_depth[i] / grid.A_per_m[i]);  // step 3
-  for (const StripRun patch : positive_runs(virtual_depth)) load_patch(grid, E_star_Pa, approach_m, patch, half_length, p0);
+  for (const StripRun patch : positive_runs(virtual_depth))
+    load_patch(grid, E_star_Pa, approach_m, patch, half_length, p0);
   return solution_from_strips(grid, half_length, p0, kMethod, approach_m);
 }
 

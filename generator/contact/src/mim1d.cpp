@@ -58,8 +58,7 @@ Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOpt
     : E_star_Pa_(E_star_Pa), options_(options) {
   if (!(std::isfinite(E_star_Pa) && E_star_Pa > 0.0))
     throw InputError("material", 0, "effective modulus must be positive and finite");
-  if (!(options.tolerance > 0.0 && options.tolerance < 1e-2))
-    throw InputError("tolerance", 0, "must lie in (0, 0.01)");
+  if (!(options.tolerance > 0.0 && options.tolerance < 1e-2)) throw InputError("tolerance", 0, "must lie in (0, 0.01)");
   if (options.max_iterations < 1 || options.max_outer_iterations < 1)
     throw InputError("max iterations", 0, "must be at least 1");
   if (options.curvature.smoothing_fraction <= 0.0 || !std::isfinite(options.curvature.smoothing_fraction))
@@ -92,7 +91,8 @@ void Mim1dSolver::reset(const GapProfile& gap) {
 }
 
 void Mim1dSolver::update_lengths() {
-  for (const std::size_t j : active_) length_[j] = std::sqrt(compliance_[j].compliance_m_per_Pa * load_[j] / (kPi * b_));
+  for (const std::size_t j : active_)
+    length_[j] = std::sqrt(compliance_[j].compliance_m_per_Pa * load_[j] / (kPi * b_));
 }
 
 void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
@@ -111,10 +111,8 @@ void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
     const bool fast = StripKernel::in_table(beta) && StripKernel::in_table(static_cast<double>(2 * reach + 1) * beta);
     for (std::size_t k = 0; k <= reach; ++k) {
       const double t = static_cast<double>(2 * k + 1) * beta;
-      if (fast)
-        kernel.value_and_scaled_slope_in_table(t, column_h_[k], column_q_[k]);
-      else
-        kernel.value_and_scaled_slope(t, column_h_[k], column_q_[k]);
+      if (fast) kernel.value_and_scaled_slope_in_table(t, column_h_[k], column_q_[k]);
+      else kernel.value_and_scaled_slope(t, column_h_[k], column_q_[k]);
     }
     const double load = with_displacement ? load_[j] : 0.0;
     double* column = matrix.col(c).data();
@@ -151,16 +149,20 @@ void Mim1dSolver::initialise_zone(double approach_m) {
   std::fill(load_.begin(), load_.end(), 0.0);
   refresh_compliances(approach_m);
   const std::size_t n = grid_.size();
-  const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  const auto deepest =
+      static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
   // ANALYN is local: each strip is measured from the deepest point of its own basin of h (between neighbouring
   // local maxima), so that every separate contact region starts loaded.
   std::vector<double>& basin_minimum = basin_scratch_;
   basin_minimum.assign(n, 0.0);
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = begin + 1;
-    while (end < n && !(end + 1 < n && grid_.h_m[end] > grid_.h_m[end - 1] && grid_.h_m[end] >= grid_.h_m[end + 1])) ++end;
-    const double low = *std::min_element(grid_.h_m.begin() + static_cast<std::ptrdiff_t>(begin), grid_.h_m.begin() + static_cast<std::ptrdiff_t>(end));
-    std::fill(basin_minimum.begin() + static_cast<std::ptrdiff_t>(begin), basin_minimum.begin() + static_cast<std::ptrdiff_t>(end), low);
+    while (end < n && !(end + 1 < n && grid_.h_m[end] > grid_.h_m[end - 1] && grid_.h_m[end] >= grid_.h_m[end + 1]))
+      ++end;
+    const double low = *std::min_element(grid_.h_m.begin() + static_cast<std::ptrdiff_t>(begin),
+                                         grid_.h_m.begin() + static_cast<std::ptrdiff_t>(end));
+    std::fill(basin_minimum.begin() + static_cast<std::ptrdiff_t>(begin),
+              basin_minimum.begin() + static_cast<std::ptrdiff_t>(end), low);
     begin = end;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -329,9 +331,10 @@ bool Mim1dSolver::newton_step(const InnerState& state, double force_mismatch, do
 }
 
 void Mim1dSolver::fixed_point_step(const InnerState& state, double& next_approach) {
-  if (options_.update == Mim1dUpdate::Newton) build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
+  if (options_.update == Mim1dUpdate::Newton)
+    build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
   factorisation_.compute(influence_);
-  if (state.target_load_N) {  // G N - delta 1 = -h,  1^T N = target
+  if (state.target_load_N) {                                              // G N - delta 1 = -h,  1^T N = target
     next_loads_ = factorisation_.solve(rhs_ - state.approach_m * ones_);  // G^-1 (-h)
     slope_ = factorisation_.solve(ones_);
     next_approach = (*state.target_load_N - next_loads_.sum()) / slope_.sum();
@@ -498,9 +501,11 @@ NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
 }
 
 double Mim1dSolver::hertz_start_approach(double normal_force_N) const {
-  const auto deepest = static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  const auto deepest =
+      static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
   const double A0 = grid_.A_per_m[deepest];
-  const HertzContact hertz = hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / kCurvatureRatioLimit), E_star_Pa_, normal_force_N);
+  const HertzContact hertz =
+      hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / kCurvatureRatioLimit), E_star_Pa_, normal_force_N);
   return grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : kFallbackStartApproach_m);
 }
 
@@ -536,8 +541,8 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     solution.residual = residual;
     return solution;
   };
-  const auto deepest = static_cast<std::size_t>(
-      std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  const auto deepest =
+      static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
   const double h_min = grid_.h_m[deepest];
   if (!(std::isfinite(normal_force_N) && normal_force_N >= 0.0)) {
     active_.clear();
@@ -560,7 +565,8 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     iterations += inner.iterations;
     if (inner.status == SolveStatus::NoContact) {
       lower = approach;
-      approach = std::isfinite(upper) ? 0.5 * (lower + upper) : h_min + kNoContactGrowth * (approach - h_min) + kNoContactNudge_m;
+      approach = std::isfinite(upper) ? 0.5 * (lower + upper)
+                                      : h_min + kNoContactGrowth * (approach - h_min) + kNoContactNudge_m;
       warm = false;
       continue;
     }

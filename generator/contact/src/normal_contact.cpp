@@ -47,7 +47,8 @@ NormalSolution solve_bem2d(const GapProfile& gap, const MethodOptions& options, 
 bool valid_input(const GapProfile& gap, const MethodOptions& options, Loading loading) {
   if (!(std::isfinite(options.E_star_Pa) && options.E_star_Pa > 0.0)) return false;
   if (!(std::isfinite(options.strip_width_m) && options.strip_width_m > 0.0)) return false;
-  if (!std::isfinite(loading.value) || (loading.kind == Loading::Kind::NormalForce && loading.value < 0.0)) return false;
+  if (!std::isfinite(loading.value) || (loading.kind == Loading::Kind::NormalForce && loading.value < 0.0))
+    return false;
   try {
     validate(gap);
   } catch (const InputError&) {
@@ -67,7 +68,8 @@ NormalSolution solve_normal_contact(const GapProfile& gap, const MethodOptions& 
   switch (options.method) {
     case ContactMethod::Hertz: return solve_rung(solve_hertz_for_approach, solve_hertz_for_load, gap, options, loading);
     case ContactMethod::Kp: return solve_rung(solve_kp_for_approach, solve_kp_for_load, gap, options, loading);
-    case ContactMethod::Analyn: return solve_rung(solve_analyn_for_approach, solve_analyn_for_load, gap, options, loading);
+    case ContactMethod::Analyn:
+      return solve_rung(solve_analyn_for_approach, solve_analyn_for_load, gap, options, loading);
     case ContactMethod::Mim1d: return solve_mim1d(gap, options, loading);
     case ContactMethod::Bem2d: return solve_bem2d(gap, options, loading);
   }

@@ -13,11 +13,11 @@ namespace ctab::gen {
 
 namespace {
 
-constexpr double kCurvatureRatioLimit = 20.0;       // B >= A/20 (CONTACT's R_y <= 20 R_x rule), start value only
-constexpr double kFallbackStartApproach_m = 1e-4;   // start value when Hertz fails
-constexpr int kBracketDoublings = 60;               // 2^60 x the start: far beyond any elastic approach
-constexpr int kLoadSearchIterations = 200;          // Illinois converges superlinearly; a hopeless case stops here
-constexpr double kApproachTolerance_m = 1e-16;      // bracket width at which the search stops [m]
+constexpr double kCurvatureRatioLimit = 20.0;      // B >= A/20 (CONTACT's R_y <= 20 R_x rule), start value only
+constexpr double kFallbackStartApproach_m = 1e-4;  // start value when Hertz fails
+constexpr int kBracketDoublings = 60;              // 2^60 x the start: far beyond any elastic approach
+constexpr int kLoadSearchIterations = 200;         // Illinois converges superlinearly; a hopeless case stops here
+constexpr double kApproachTolerance_m = 1e-16;     // bracket width at which the search stops [m]
 
 // The strip grid of a rung; false (no exception) when the gap, width or E* is unusable.
 bool try_strip_grid(const GapProfile& gap, double E_star_Pa, double strip_width_m, StripGrid& grid) {
@@ -80,7 +80,8 @@ NormalSolution solution_from_strips(const StripGrid& grid, const std::vector<dou
       patch = &solution.patches.emplace_back();
       patch->y_min_m = grid.y_m[i] - b;
     }
-    const StripSolution strip{grid.y_m[i], half_length_m[i], p0_Pa[i], std::numbers::pi * half_length_m[i] * b * p0_Pa[i]};
+    const StripSolution strip{grid.y_m[i], half_length_m[i], p0_Pa[i],
+                              std::numbers::pi * half_length_m[i] * b * p0_Pa[i]};
     patch->strips.push_back(strip);
     patch->normal_force_N += strip.load_N;
     patch->area_m2 += 4.0 * strip.half_length_m * b;
@@ -99,14 +100,15 @@ NormalSolution solution_from_strips(const StripGrid& grid, const std::vector<dou
 double hertz_start_approach(const StripGrid& grid, double E_star_Pa, double normal_force_N) {
   const std::size_t k = deepest_strip(grid, {0, grid.size()});
   const double A = grid.A_per_m[k];
-  const HertzContact hertz = hertz_from_load(A, std::max(grid.B_per_m[k], A / kCurvatureRatioLimit), E_star_Pa,
-                                             normal_force_N);
+  const HertzContact hertz =
+      hertz_from_load(A, std::max(grid.B_per_m[k], A / kCurvatureRatioLimit), E_star_Pa, normal_force_N);
   return hertz.status == SolveStatus::Converged ? hertz.approach_m : kFallbackStartApproach_m;
 }
 
 NormalSolution solve_load_by_approach(const std::function<NormalSolution(double)>& at_approach, double h_min_m,
                                       double start_approach_m, double normal_force_N, const char* method) {
-  if (!(std::isfinite(normal_force_N) && normal_force_N >= 0.0)) return status_solution(SolveStatus::InvalidInput, method);
+  if (!(std::isfinite(normal_force_N) && normal_force_N >= 0.0))
+    return status_solution(SolveStatus::InvalidInput, method);
   if (normal_force_N == 0.0) return status_solution(SolveStatus::NoContact, method, h_min_m);
   int solves = 0;
   NormalSolution last;
@@ -153,9 +155,9 @@ NormalSolution solve_on_strips_for_load(const GapProfile& gap, double E_star_Pa,
   StripGrid grid;
   if (!try_strip_grid(gap, E_star_Pa, strip_width_m, grid)) return status_solution(SolveStatus::InvalidInput, method);
   const double h_min = grid.h_m[deepest_strip(grid, {0, grid.size()})];
-  NormalSolution solution = solve_load_by_approach([&](double approach) { return solve(grid, approach); }, h_min,
-                                                   hertz_start_approach(grid, E_star_Pa, normal_force_N),
-                                                   normal_force_N, method);
+  NormalSolution solution =
+      solve_load_by_approach([&](double approach) { return solve(grid, approach); }, h_min,
+                             hertz_start_approach(grid, E_star_Pa, normal_force_N), normal_force_N, method);
   solution.solve_time_s = seconds_since(start);
   return solution;
 }

@@ -117,7 +117,8 @@ void virtual_half_widths(const StripGrid& grid, double level_m, double virtual_d
     } else if (r == runs.size()) {
       half_width[k] = effective.back();
     } else {  // between runs r - 1 and r
-      const double t = std::clamp((grid.y_m[k] - runs[r - 1].right_m) / (runs[r].left_m - runs[r - 1].right_m), 0.0, 1.0);
+      const double t =
+          std::clamp((grid.y_m[k] - runs[r - 1].right_m) / (runs[r].left_m - runs[r - 1].right_m), 0.0, 1.0);
       half_width[k] = (1.0 - t) * effective[r - 1] + t * effective[r];
     }
   }

@@ -40,7 +40,8 @@ StripGrid make_strip_grid(const GapProfile& gap, double strip_width_m) {
 
 void fill_strip_grid(const GapProfile& gap, double strip_width_m, StripGrid& grid) {
   if (!(std::isfinite(strip_width_m) && strip_width_m > 0.0))
-    throw InputError("--strip-width", 0, "strip width must be positive and finite, got " + std::to_string(strip_width_m));
+    throw InputError("--strip-width", 0,
+                     "strip width must be positive and finite, got " + std::to_string(strip_width_m));
   validate(gap);
   const double strips = strip_count(gap, strip_width_m);
   if (strips > static_cast<double>(kMaxStripsPerPatch))

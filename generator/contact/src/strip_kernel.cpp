@@ -22,9 +22,7 @@ static_assert(kTableMin == 0x1p-40 && StripKernel::kMinExponent == -40 && StripK
 constexpr double kLargeArgumentConstant = std::numbers::pi / 8.0 + std::numbers::pi / 4.0 * std::numbers::ln2;
 
 double small_argument_value(double t) { return t * std::log(4.0 / t); }
-double large_argument_value(double t) {
-  return std::numbers::pi / 4.0 * std::asinh(t) + kLargeArgumentConstant;
-}
+double large_argument_value(double t) { return std::numbers::pi / 4.0 * std::asinh(t) + kLargeArgumentConstant; }
 
 double node(std::size_t index) {
   const int octave = static_cast<int>(index / kIntervalsPerOctave);
@@ -44,10 +42,10 @@ double StripKernel::exact_slope(double t) noexcept {
 
 StripKernel::StripKernel() : intervals_(kIntervalCount) {
   // Cumulative integration of the exact slope, 4-point Gauss-Legendre per interval.
-  static constexpr std::array<double, 4> kGaussNodes = {-0.8611363115940526, -0.3399810435848563,
-                                                        0.3399810435848563, 0.8611363115940526};
-  static constexpr std::array<double, 4> kGaussWeights = {0.3478548451374538, 0.6521451548625461,
-                                                          0.6521451548625461, 0.3478548451374538};
+  static constexpr std::array<double, 4> kGaussNodes = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                                                        0.8611363115940526};
+  static constexpr std::array<double, 4> kGaussWeights = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                                                          0.3478548451374538};
   double t0 = node(0);
   double h0 = small_argument_value(t0);
   double d0 = exact_slope(t0);

@@ -31,7 +31,8 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    fields.push_back(
+        trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
@@ -98,7 +99,8 @@ GapProfile parse_gap_csv(std::istream& in, const std::string& source) {
       values[c] = *value;
     }
     if (!(values[2] > 0.0))
-      throw InputError(source, line_number, "field 'A_per_m': must be positive, got " + quote_user_text(fields[column_index[2]]));
+      throw InputError(source, line_number,
+                       "field 'A_per_m': must be positive, got " + quote_user_text(fields[column_index[2]]));
     if (!gap.y_m.empty() && !(values[0] > gap.y_m.back()))
       throw InputError(source, line_number, "field 'y_m': strips must be strictly increasing in y");
     gap.y_m.push_back(values[0]);

@@ -20,9 +20,9 @@ namespace ctab::gen {
 namespace {
 
 struct RawPoint {
-  double y, z;               // canonical, [m] once converted
-  std::size_t line;          // source line
-  double file_y, file_z;     // the numbers as written in the file (for messages)
+  double y, z;            // canonical, [m] once converted
+  std::size_t line;       // source line
+  double file_y, file_z;  // the numbers as written in the file (for messages)
 };
 
 std::string lower(std::string s) {
@@ -68,11 +68,13 @@ bool parse_double(const std::string& text, double& value) {
 RawPoint parse_point(const std::vector<std::string>& fields, std::size_t column_y, std::size_t column_z,
                      const std::string& path, std::size_t line) {
   if (fields.size() <= std::max(column_y, column_z))
-    throw InputError(path, line, "expected a point with at least " + std::to_string(std::max(column_y, column_z) + 1) +
-                                     " numbers, got " + std::to_string(fields.size()));
+    throw InputError(path, line,
+                     "expected a point with at least " + std::to_string(std::max(column_y, column_z) + 1) +
+                         " numbers, got " + std::to_string(fields.size()));
   RawPoint p{0, 0, line, 0, 0};
   if (!parse_double(fields[column_y], p.y) || !parse_double(fields[column_z], p.z))
-    throw InputError(path, line, "expected numeric coordinates, got " + quote_user_text(fields[column_y] + " " + fields[column_z]));
+    throw InputError(path, line,
+                     "expected numeric coordinates, got " + quote_user_text(fields[column_y] + " " + fields[column_z]));
   if (!std::isfinite(p.y) || !std::isfinite(p.z)) throw InputError(path, line, "non-finite coordinate");
   p.file_y = p.y;
   p.file_z = p.z;
@@ -83,8 +85,8 @@ struct Parsed {
   std::vector<RawPoint> points;  // in metres
   bool mirror_y = false, mirror_z = false, invert = false;
   std::optional<bool> default_mirror_y;
-  double shift_y = 0.0;          // applied after mirroring [m]
-  bool scaled_by_file = false;   // the file sets its own unit (Simpack units.len.f): check the profile's size
+  double shift_y = 0.0;         // applied after mirroring [m]
+  bool scaled_by_file = false;  // the file sets its own unit (Simpack units.len.f): check the profile's size
 };
 
 bool starts_comment(const std::string& t) { return t.front() == '#' || t.front() == '!' || t.front() == '%'; }
@@ -137,8 +139,10 @@ Parsed read_simpack(std::istream& in, const std::string& path) {
     if (key == "header.begin") header = true;
     else if (key == "spline.begin") spline = true;
     else if (key == "point.begin") points = true;
-    else if (key == "point.end") { points = false; ended = true; }
-    else if (points) raw.push_back(parse_point(split_numbers(t), 0, 1, path, line));
+    else if (key == "point.end") {
+      points = false;
+      ended = true;
+    } else if (points) raw.push_back(parse_point(split_numbers(t), 0, 1, path, line));
     else if (const auto eq = t.find('='); eq != std::string::npos) {
       double value = 0.0;
       if (parse_double(trim(t.substr(eq + 1)), value)) keys[lower(trim(t.substr(0, eq)))] = value;
@@ -159,7 +163,8 @@ Parsed read_simpack(std::istream& in, const std::string& path) {
     if (y_lo < y_hi && (p.y < y_lo || p.y > y_hi)) continue;
     if (z_lo < z_hi) p.z = std::clamp(p.z, z_lo, z_hi);
     if (!parsed.points.empty() && min_distance > 0.0 &&
-        std::hypot(p.y / per_metre - parsed.points.back().y, p.z / per_metre - parsed.points.back().z) < min_distance / per_metre)
+        std::hypot(p.y / per_metre - parsed.points.back().y, p.z / per_metre - parsed.points.back().z) <
+            min_distance / per_metre)
       continue;
     parsed.points.push_back({p.y / per_metre, p.z / per_metre, p.line, p.file_y, p.file_z});
   }
@@ -203,7 +208,8 @@ Parsed read_miniprof(std::istream& in, const std::string& path, const std::strin
         const std::string key = lower(trim(t.substr(0, eq))), value = trim(t.substr(eq + 1));
         if (key == "columndef") {
           const auto columns = split_numbers(lower(value));
-          const auto x = std::find(columns.begin(), columns.end(), "x"), y = std::find(columns.begin(), columns.end(), "y");
+          const auto x = std::find(columns.begin(), columns.end(), "x"),
+                     y = std::find(columns.begin(), columns.end(), "y");
           if (x == columns.end() || y == columns.end()) throw InputError(path, line, "ColumnDef must name X and Y");
           column_y = static_cast<std::size_t>(x - columns.begin());
           column_z = static_cast<std::size_t>(y - columns.begin());
@@ -226,8 +232,9 @@ Parsed read_miniprof(std::istream& in, const std::string& path, const std::strin
     double probe = 0.0;
     if (marked && (fields.empty() || !parse_double(fields[0], probe))) continue;  // a quoted remark
     if (declared.columns > 0 && fields.size() != declared.columns)
-      throw InputError(path, line, "expected " + std::to_string(declared.columns) + " numbers per point (ColumnDef on line " +
-                                       std::to_string(declared.columns_line) + "), found " + std::to_string(fields.size()));
+      throw InputError(path, line,
+                       "expected " + std::to_string(declared.columns) + " numbers per point (ColumnDef on line " +
+                           std::to_string(declared.columns_line) + "), found " + std::to_string(fields.size()));
     const RawPoint p = parse_point(fields, column_y, column_z, path, line);
     ++rows;
     history.add(fields, line);
@@ -235,8 +242,9 @@ Parsed read_miniprof(std::istream& in, const std::string& path, const std::strin
   }
   if (!saw_header) throw InputError(path, 0, "missing MiniProf header (Key=Value lines and an empty line)");
   if (declared.points && rows != *declared.points)
-    throw InputError(path, reader.line(), "expected " + std::to_string(*declared.points) + " points (XYPoints on line " +
-                                              std::to_string(declared.points_line) + "), found " + std::to_string(rows));
+    throw InputError(path, reader.line(),
+                     "expected " + std::to_string(*declared.points) + " points (XYPoints on line " +
+                         std::to_string(declared.points_line) + "), found " + std::to_string(rows));
   check_last_row_complete(path, reader, history);
   if (extension == "whl") parsed.shift_y = -70.0e-3;  // X from the flange back: S = X - 70 mm
   if (extension == "ban") parsed.default_mirror_y = true;
@@ -260,7 +268,8 @@ Parsed read_columns(std::istream& in, const std::string& path, double unit) {
       continue;
     }
     first = false;
-    if (fields.size() != 2) throw InputError(path, line, "expected 2 columns 'y z', got " + std::to_string(fields.size()));
+    if (fields.size() != 2)
+      throw InputError(path, line, "expected 2 columns 'y z', got " + std::to_string(fields.size()));
     const RawPoint p = parse_point(fields, 0, 1, path, line);
     history.add(fields, line);
     parsed.points.push_back({p.y * unit, p.z * unit, line, p.y, p.z});
@@ -278,7 +287,8 @@ std::shared_ptr<const ProfileCurve> reorigin_at_highest_point(std::shared_ptr<co
 
 std::string duplicate_point_message(const RawPoint& a, const RawPoint& b) {
   char text[200];
-  std::snprintf(text, sizeof text, "duplicate point at line %zu (y = %.9g, z = %.9g as in the file; the same as line %zu): remove it",
+  std::snprintf(text, sizeof text,
+                "duplicate point at line %zu (y = %.9g, z = %.9g as in the file; the same as line %zu): remove it",
                 std::max(a.line, b.line), b.file_y, b.file_z, std::min(a.line, b.line));
   return text;
 }
@@ -308,8 +318,9 @@ ProfilePoints read_profile_points(const std::string& path, ProfileRole role, con
   if (!in) throw InputError(path, 0, "cannot open profile file");
   const std::string extension = extension_of(path);
   Parsed parsed = (extension == "prw" || extension == "prr") ? read_simpack(in, path)
-                  : (extension == "whl" || extension == "ban") ? read_miniprof(in, path, extension, options.length_unit_m)
-                                                               : read_columns(in, path, options.length_unit_m);
+                  : (extension == "whl" || extension == "ban")
+                      ? read_miniprof(in, path, extension, options.length_unit_m)
+                      : read_columns(in, path, options.length_unit_m);
   auto& points = parsed.points;
   if (points.size() < 10)
     throw InputError(path, 0, "expected at least 10 profile points, got " + std::to_string(points.size()));
@@ -325,10 +336,13 @@ ProfilePoints read_profile_points(const std::string& path, ProfileRole role, con
   // Auto-detect z (and a wheel's y): a rail's ends lie below its top; a wheel's flange tip is its lowest point.
   if (!options.mirror_z) {
     const auto mid = points[points.size() / 2].z;
-    const bool upside_down = role == ProfileRole::Rail ? std::max(points.front().z, points.back().z) < mid
-                                                       : -std::min_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.z < b.z; })->z >
-                                                             std::max_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.z < b.z; })->z;
-    if (upside_down) for (RawPoint& p : points) p.z = -p.z;
+    const bool upside_down =
+        role == ProfileRole::Rail
+            ? std::max(points.front().z, points.back().z) < mid
+            : -std::min_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.z < b.z; })->z >
+                  std::max_element(points.begin(), points.end(), [](auto& a, auto& b) { return a.z < b.z; })->z;
+    if (upside_down)
+      for (RawPoint& p : points) p.z = -p.z;
   } else if (*options.mirror_z) {
     for (RawPoint& p : points) p.z = -p.z;
   }
@@ -348,12 +362,14 @@ ProfilePoints read_profile_points(const std::string& path, ProfileRole role, con
     const RawPoint &a = points[i - 1], &b = points[i];
     if (a.y == b.y && a.z == b.z) throw InputError(path, std::max(a.line, b.line), duplicate_point_message(a, b));
     if (!(b.y > a.y))
-      throw InputError(path, b.line, "profile steps backwards in y (a loop or overhang); points must be ordered along the profile");
+      throw InputError(path, b.line,
+                       "profile steps backwards in y (a loop or overhang); points must be ordered along the profile");
     length += std::hypot(b.y - a.y, b.z - a.z);
   }
   if (length < 5e-3 || length > 0.5)
-    throw InputError(path, 0, "profile length " + std::to_string(length * 1e3) +
-                                  " mm is implausible (expected 5 to 500 mm): check the length unit");
+    throw InputError(path, 0,
+                     "profile length " + std::to_string(length * 1e3) +
+                         " mm is implausible (expected 5 to 500 mm): check the length unit");
   ProfilePoints out;
   for (const RawPoint& p : points) {
     out.y_m.push_back(p.y);
@@ -365,19 +381,22 @@ ProfilePoints read_profile_points(const std::string& path, ProfileRole role, con
   return out;
 }
 
-double parse_inclination(const std::string& text, const std::string& source, std::size_t line, const std::string& what) {
+double parse_inclination(const std::string& text, const std::string& source, std::size_t line,
+                         const std::string& what) {
   double value = -1.0;
   const auto slash = text.find('/');
   if (slash == std::string::npos) {
     if (!parse_double(trim(text), value)) value = -1.0;
   } else {
     double numerator = 0.0, denominator = 0.0;
-    if (parse_double(trim(text.substr(0, slash)), numerator) && parse_double(trim(text.substr(slash + 1)), denominator) &&
-        denominator != 0.0)
+    if (parse_double(trim(text.substr(0, slash)), numerator) &&
+        parse_double(trim(text.substr(slash + 1)), denominator) && denominator != 0.0)
       value = numerator / denominator;
   }
   if (!(std::isfinite(value) && value >= 0.0 && value < 0.2))
-    throw InputError(source, line, (what.empty() ? "" : what + ": ") + "expected a ratio such as 1/40 or a number in [0, 0.2), got " + quote_user_text(text));
+    throw InputError(source, line,
+                     (what.empty() ? "" : what + ": ") + "expected a ratio such as 1/40 or a number in [0, 0.2), got " +
+                         quote_user_text(text));
   return value;
 }
 
@@ -394,7 +413,8 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
   if (role == ProfileRole::Rail) check_not_inclined_twice(points, options.inclination, spec);
   curve = std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, options.smoothing_length_m);
   if (role == ProfileRole::Rail) {
-    if (options.inclination != 0.0) curve = std::make_shared<TransformedCurve>(curve, -std::atan(options.inclination), 0.0, 0.0);
+    if (options.inclination != 0.0)
+      curve = std::make_shared<TransformedCurve>(curve, -std::atan(options.inclination), 0.0, 0.0);
     curve = reorigin_at_highest_point(curve, spec);
   }
   return ProfileTable(*curve, kProfileTableStep_m, spec);

@@ -26,7 +26,8 @@ struct SizeBound {
 };
 
 inline constexpr SizeBound kWheelWidth{"wheel profile width", 100.0, 160.0};
-inline constexpr SizeBound kWheelFlangeHeight{"wheel flange height (flange tip above the tape circle y = 0)", 20.0, 40.0};
+inline constexpr SizeBound kWheelFlangeHeight{"wheel flange height (flange tip above the tape circle y = 0)", 20.0,
+                                              40.0};
 inline constexpr SizeBound kRailWidth{"rail profile width", 50.0, 120.0};
 inline constexpr SizeBound kRailHeight{"rail profile height (deepest point below the top)", 5.0, 60.0};
 
@@ -39,7 +40,8 @@ inline std::optional<std::string> outside(const SizeBound& bound, double value_m
 }
 
 //! A message when the canonical profile (y increasing, z down, SI) cannot be a wheel or rail of that size.
-inline std::optional<std::string> implausible_size(const std::vector<double>& y, const std::vector<double>& z, ProfileRole role) {
+inline std::optional<std::string> implausible_size(const std::vector<double>& y, const std::vector<double>& z,
+                                                   ProfileRole role) {
   constexpr const char* kScale = "check units.len.f (scale)";
   const double width_mm = (y.back() - y.front()) * 1e3;
   const auto [z_min, z_max] = std::minmax_element(z.begin(), z.end());
@@ -50,8 +52,10 @@ inline std::optional<std::string> implausible_size(const std::vector<double>& y,
   if (auto m = outside(kWheelWidth, width_mm, kScale)) return m;
   if (!(y.front() <= 0.0 && y.back() >= 0.0)) {
     char text[200];
-    std::snprintf(text, sizeof text, "wheel profile spans y = %.1f to %.1f mm, without the tape circle y = 0: check shift.y and units.len.f",
-                  y.front() * 1e3, y.back() * 1e3);
+    std::snprintf(
+        text, sizeof text,
+        "wheel profile spans y = %.1f to %.1f mm, without the tape circle y = 0: check shift.y and units.len.f",
+        y.front() * 1e3, y.back() * 1e3);
     return std::string(text);
   }
   const auto k = static_cast<std::size_t>(std::upper_bound(y.begin(), y.end(), 0.0) - y.begin());

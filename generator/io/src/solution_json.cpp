@@ -16,14 +16,10 @@ nlohmann::json to_json(const NormalSolution& solution) {
                        {"y_max_m", patch.y_max_m},
                        {"strips", std::move(strips)}});
   }
-  return {{"status", status_name(solution.status)},
-          {"method", solution.method},
-          {"approach_m", solution.approach_m},
-          {"normal_load_N", solution.normal_load_N},
-          {"iterations", solution.iterations},
-          {"outer_iterations", solution.outer_iterations},
-          {"residual", solution.residual},
-          {"solve_time_s", solution.solve_time_s},
+  return {{"status", status_name(solution.status)}, {"method", solution.method},
+          {"approach_m", solution.approach_m},      {"normal_load_N", solution.normal_load_N},
+          {"iterations", solution.iterations},      {"outer_iterations", solution.outer_iterations},
+          {"residual", solution.residual},          {"solve_time_s", solution.solve_time_s},
           {"patches", std::move(patches)}};
 }
 
@@ -32,7 +28,9 @@ nlohmann::json to_json(const WheelContact& contact) {
   for (const ContactPatch& patch : contact.patches) {
     nlohmann::json strips = nlohmann::json::array();
     for (const PatchStrip& strip : patch.strips)
-      strips.push_back({{"s_m", strip.s_m}, {"y_rail_m", strip.y_rail_m}, {"half_length_m", strip.half_length_m},
+      strips.push_back({{"s_m", strip.s_m},
+                        {"y_rail_m", strip.y_rail_m},
+                        {"half_length_m", strip.half_length_m},
                         {"p0_Pa", strip.p0_Pa}});
     patches.push_back({{"zone", patch.zone},
                        {"area_m2", patch.area_m2},
@@ -51,7 +49,9 @@ nlohmann::json to_json(const WheelContact& contact) {
   }
   nlohmann::json misses = nlohmann::json::array();
   for (const GapMinimum& m : contact.near_misses)
-    misses.push_back({{"y_wheel_m", m.wheel_s_m}, {"y_rail_m", m.rail_y_m}, {"gap_m", m.gap_m},
+    misses.push_back({{"y_wheel_m", m.wheel_s_m},
+                      {"y_rail_m", m.rail_y_m},
+                      {"gap_m", m.gap_m},
                       {"contact_angle_rad", m.contact_angle_rad}});
   return {{"status", status_name(contact.status)},
           {"dy_m", contact.dy_m},

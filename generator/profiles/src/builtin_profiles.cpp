@@ -10,11 +10,17 @@ namespace ctab::gen {
 namespace {
 
 // S1002 section bounds [mm] and coefficients (facts/profiles.md 1.2, sources [N1][N2]).
-constexpr double kBoundHG = -62.764705882, kBoundGF = -49.662510381, kBoundFE = -39.764473993,
-                 kBoundED = -38.426669071, kBoundDC = -35.0, kBoundCB = -26.0, kBoundBA = 32.15796;
-constexpr std::array<double, 9> kSectionB = {0.0,           -3.358537058e-02, 1.565681624e-03,
-                                             -2.810427944e-05, 5.844240864e-08, -1.562379023e-08,
-                                             5.309217349e-15, -5.957839843e-12, 2.646656573e-13};
+constexpr double kBoundHG = -62.764705882, kBoundGF = -49.662510381, kBoundFE = -39.764473993, kBoundED = -38.426669071,
+                 kBoundDC = -35.0, kBoundCB = -26.0, kBoundBA = 32.15796;
+constexpr std::array<double, 9> kSectionB = {0.0,
+                                             -3.358537058e-02,
+                                             1.565681624e-03,
+                                             -2.810427944e-05,
+                                             5.844240864e-08,
+                                             -1.562379023e-08,
+                                             5.309217349e-15,
+                                             -5.957839843e-12,
+                                             2.646656573e-13};
 constexpr std::array<double, 8> kSectionC = {-4.320221063e+03, -1.038384026e+03, -1.065501873e+02, -6.051367875,
                                              -2.054332446e-01, -4.169739389e-03, -4.687195829e-05, -2.252755540e-07};
 
@@ -50,8 +56,8 @@ class ArcLineChain final : public ProfileCurve {
  public:
   struct Segment {
     bool is_arc;
-    double y0, z0;       // line: start point; arc: centre
-    double a, b;         // line: unit direction (a, b); arc: radius a, start angle b (from -z, towards +y)
+    double y0, z0;  // line: start point; arc: centre
+    double a, b;    // line: unit direction (a, b); arc: radius a, start angle b (from -z, towards +y)
     double length;
   };
   void add_arc(double yc, double zc, double radius, double angle_begin, double angle_end) {

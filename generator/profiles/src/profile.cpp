@@ -9,7 +9,8 @@ namespace ctab::gen {
 
 TransformedCurve::TransformedCurve(std::shared_ptr<const ProfileCurve> base, double angle_rad, double shift_y_m,
                                    double shift_z_m)
-    : base_(std::move(base)), cos_(std::cos(angle_rad)), sin_(std::sin(angle_rad)), shift_y_(shift_y_m), shift_z_(shift_z_m) {}
+    : base_(std::move(base)), cos_(std::cos(angle_rad)), sin_(std::sin(angle_rad)), shift_y_(shift_y_m),
+      shift_z_(shift_z_m) {}
 
 CurvePoint TransformedCurve::at(double t) const {
   const CurvePoint p = base_->at(t);
@@ -28,7 +29,8 @@ double ProfilePoint::curvature() const {
   return d2z / (g * std::sqrt(g));
 }
 
-ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string name) : name_(std::move(name)), step_(step_m) {
+ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string name)
+    : name_(std::move(name)), step_(step_m) {
   const double t0 = curve.t_begin(), t1 = curve.t_end();
   const CurvePoint first = curve.at(t0), last = curve.at(t1);
   if (!(last.y > first.y)) throw InputError(name_, 0, "profile must extend in +y");
@@ -47,10 +49,14 @@ ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string
       const CurvePoint p = curve.at(t);
       const double f = p.y - y;
       if (std::abs(f) <= 1e-15) break;
-      if (f < 0.0) lo = t; else hi = t;
+      if (f < 0.0) lo = t;
+      else hi = t;
       double next = (p.dy > 0.0) ? t - f / p.dy : 0.5 * (lo + hi);
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::abs(next - t) <= 1e-16 * (1.0 + std::abs(t))) { t = next; break; }
+      if (std::abs(next - t) <= 1e-16 * (1.0 + std::abs(t))) {
+        t = next;
+        break;
+      }
       t = next;
     }
     t_lo = t;

@@ -33,7 +33,8 @@ void fit(const std::vector<double>& s, const std::vector<double>& x, const std::
       if (k == j + 1) value += h[uj + 1] / 6.0;
       if (k + 1 == j) value += h[uk + 1] / 6.0;
       if (lambda > 0.0)
-        for (std::size_t row = std::max(uj, uk); row <= std::min(uj, uk) + 2; ++row) value += lambda * q(row, uj) * q(row, uk) / w[row];
+        for (std::size_t row = std::max(uj, uk); row <= std::min(uj, uk) + 2; ++row)
+          value += lambda * q(row, uj) * q(row, uk) / w[row];
       if (value != 0.0) entries.emplace_back(j, k, value);
     }
   }
@@ -52,7 +53,8 @@ void fit(const std::vector<double>& s, const std::vector<double>& x, const std::
   if (lambda > 0.0)
     for (std::size_t i = 0; i < n; ++i) {
       double qg = 0.0;
-      for (std::size_t column = (i >= 2 ? i - 2 : 0); column <= std::min(i, n - 3); ++column) qg += q(i, column) * gamma(static_cast<Eigen::Index>(column));
+      for (std::size_t column = (i >= 2 ? i - 2 : 0); column <= std::min(i, n - 3); ++column)
+        qg += q(i, column) * gamma(static_cast<Eigen::Index>(column));
       f[i] = x[i] - lambda * qg / w[i];
     }
 }

@@ -47,7 +47,8 @@ struct ManifestReader {
   std::vector<std::string> profile_list(const toml::node* node, const std::string& key) const {
     const toml::array* list = node ? node->as_array() : nullptr;
     if (!list || list->empty()) {
-      if (!node) throw InputError(source, 0, "'" + key + "': missing (a list of profile files, globs or built-in names)");
+      if (!node)
+        throw InputError(source, 0, "'" + key + "': missing (a list of profile files, globs or built-in names)");
       fail(*node, key, "expected a non-empty list of profile files, globs or built-in names");
     }
     std::vector<std::string> specs;
@@ -70,7 +71,8 @@ std::string stem_of(const std::string& spec) {
 
 bool is_builtin_profile(const std::string& spec) {
   std::string name = spec;
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return name == "s1002" || name == "uic60" || name == "60e1";
 }
 
@@ -117,7 +119,8 @@ BatchManifest parse_batch_manifest(const std::string& text, const std::string& s
     const toml::array* list = node ? node->as_array() : nullptr;
     if (!list || list->empty() || list->size() > kMaxBatchPairs) {
       if (!node) throw InputError(source, 0, "'pairs': missing (pairing = \"listed\" needs [[wheel, rail], ...])");
-      r.fail(*node, "pairs", "expected a non-empty list (at most " + std::to_string(kMaxBatchPairs) + ") of [wheel, rail]");
+      r.fail(*node, "pairs",
+             "expected a non-empty list (at most " + std::to_string(kMaxBatchPairs) + ") of [wheel, rail]");
     }
     for (const toml::node& item : *list) {
       const toml::array* pair = item.as_array();
@@ -133,9 +136,9 @@ BatchManifest parse_batch_manifest(const std::string& text, const std::string& s
   for (ProfilePair& pair : manifest.pairs) {
     pair.table_name = stem_of(pair.wheel) + "__" + stem_of(pair.rail) + ".h5";
     if (const auto [at, inserted] = names.emplace(pair.table_name, &pair); !inserted)
-      throw InputError(source, 0, "two pairs make the table name " + pair.table_name + ": (" + at->second->wheel + ", " +
-                                      at->second->rail + ") and (" + pair.wheel + ", " + pair.rail +
-                                      "); rename a profile file");
+      throw InputError(source, 0,
+                       "two pairs make the table name " + pair.table_name + ": (" + at->second->wheel + ", " +
+                           at->second->rail + ") and (" + pair.wheel + ", " + pair.rail + "); rename a profile file");
   }
   return manifest;
 }

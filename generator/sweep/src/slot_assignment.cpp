@@ -48,7 +48,8 @@ void continue_slots(const std::vector<std::optional<Occupant>>& previous, const 
 
 // A new contact's slot: its zone's, the spares from 2, then the other zone's; n_slots when none is free.
 std::size_t free_slot(bool flange, const std::vector<bool>& taken) {
-  const std::size_t n = taken.size(), own = flange ? kFlangeSlot : kTreadSlot, other = flange ? kTreadSlot : kFlangeSlot;
+  const std::size_t n = taken.size(), own = flange ? kFlangeSlot : kTreadSlot,
+                    other = flange ? kTreadSlot : kFlangeSlot;
   if (own < n && !taken[own]) return own;
   for (std::size_t slot = kFirstSpareSlot; slot < n; ++slot)
     if (!taken[slot]) return slot;
@@ -99,7 +100,8 @@ std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& s
     }
     out[c].slot_of = slot_of;
     std::fill(previous.begin(), previous.end(), std::nullopt);
-    for (std::size_t i = 0; i < patches.size(); ++i) previous[slot_of[i]] = Occupant{patches[i].y_rail_m, patches[i].flange};
+    for (std::size_t i = 0; i < patches.size(); ++i)
+      previous[slot_of[i]] = Occupant{patches[i].y_rail_m, patches[i].flange};
   }
   return out;
 }
@@ -115,7 +117,9 @@ SlotCase stored_case(const tables::Table& table, std::size_t i_dy, std::size_t i
   if (!out.success) return out;
   for (std::size_t slot = 0; slot < table.n_slots; ++slot)
     if (table.patch.present[table.patch_index(i_dy, i_second, wheel, slot)] != 0) stored_slot.push_back(slot);
-  const auto y_rail = [&](std::size_t slot) { return table.patch.y_rail_m[table.patch_index(i_dy, i_second, wheel, slot)]; };
+  const auto y_rail = [&](std::size_t slot) {
+    return table.patch.y_rail_m[table.patch_index(i_dy, i_second, wheel, slot)];
+  };
   std::stable_sort(stored_slot.begin(), stored_slot.end(),
                    [&](std::size_t a, std::size_t b) { return y_rail(a) < y_rail(b); });
   for (const std::size_t slot : stored_slot) {
@@ -152,7 +156,8 @@ void assign_table_slots_along_dy(tables::Table& table) {
   std::vector<std::vector<std::size_t>> stored(n_dy);
   for (std::size_t i_second = 0; i_second < n_second; ++i_second)
     for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel) {
-      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) series[i_dy] = stored_case(table, i_dy, i_second, wheel, stored[i_dy]);
+      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
+        series[i_dy] = stored_case(table, i_dy, i_second, wheel, stored[i_dy]);
       const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots);
       for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) {
         // A stored case never has more patches than slots, so it cannot overflow here; keep it as stored if it did.

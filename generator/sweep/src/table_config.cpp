@@ -78,7 +78,9 @@ class Reader {
     for (const auto& [name, node] : root_) {
       const std::string table_name(name.str());
       const auto found = schema.find(table_name);
-      if (found == schema.end() || !node.is_table()) fail(node, table_name, "unknown table (expected [profiles], [track], [material], [solver], [axes] or [output])");
+      if (found == schema.end() || !node.is_table())
+        fail(node, table_name,
+             "unknown table (expected [profiles], [track], [material], [solver], [axes] or [output])");
       for (const auto& [key, value] : *node.as_table())
         if (!found->second.count(std::string(key.str())))
           fail(value, table_name + "." + std::string(key.str()), "unknown key");
@@ -186,7 +188,8 @@ void read_profiles(const Reader& r, TableConfig& c) {
   c.wheel = r.text("profiles", "wheel", c.wheel);
   c.rail = r.text("profiles", "rail", c.rail);
   c.inclination_text = r.text("profiles", "inclination", c.inclination_text);
-  c.inclination = parse_inclination(c.inclination_text, c.source, c.key_line("profiles.inclination"), "'profiles.inclination'");
+  c.inclination =
+      parse_inclination(c.inclination_text, c.source, c.key_line("profiles.inclination"), "'profiles.inclination'");
   c.smoothing_length_m = r.number_in("profiles", "smoothing_m", c.smoothing_length_m, 0.0, kMaxSmoothingLength_m,
                                      "a smoothing length in [0, 0.1] m");
 }
@@ -209,9 +212,11 @@ void read_track(const Reader& r, TableConfig& c) {
 
 void read_material(const Reader& r, TableConfig& c) {
   c.material.youngs_modulus_Pa = r.number("material", "youngs_modulus_Pa", c.material.youngs_modulus_Pa);
-  if (!(c.material.youngs_modulus_Pa > 0.0)) r.fail_at(r.line("material", "youngs_modulus_Pa"), "material.youngs_modulus_Pa", "must be positive");
+  if (!(c.material.youngs_modulus_Pa > 0.0))
+    r.fail_at(r.line("material", "youngs_modulus_Pa"), "material.youngs_modulus_Pa", "must be positive");
   c.material.poisson_ratio = r.number("material", "poisson_ratio", c.material.poisson_ratio);
-  if (!is_valid(c.material)) r.fail_at(r.line("material", "poisson_ratio"), "material.poisson_ratio", "must lie in (-1, 0.5)");
+  if (!is_valid(c.material))
+    r.fail_at(r.line("material", "poisson_ratio"), "material.poisson_ratio", "must lie in (-1, 0.5)");
 }
 
 void read_solver(const Reader& r, TableConfig& c) {
@@ -234,11 +239,13 @@ void read_axes(const Reader& r, TableConfig& c) {
   if (!dy->is_table()) r.fail(*dy, "axes.lateral_displacement_m", "expected {start, stop, step} (a uniform axis)");
   c.lateral_displacement_m = r.axis(*dy, "axes.lateral_displacement_m");
   const toml::node* load_node = nullptr;
-  for (const auto& [kind, key] : {std::pair{LoadKind::VerticalForce, "vertical_load_N"}, std::pair{LoadKind::NormalForce, "normal_load_N"},
-                                  std::pair{LoadKind::Approach, "approach_m"}}) {
+  for (const auto& [kind, key] :
+       {std::pair{LoadKind::VerticalForce, "vertical_load_N"}, std::pair{LoadKind::NormalForce, "normal_load_N"},
+        std::pair{LoadKind::Approach, "approach_m"}}) {
     const toml::node* node = r.find("axes", key);
     if (!node) continue;
-    if (load_node) r.fail(*node, std::string("axes.") + key, "give only one of vertical_load_N, normal_load_N, approach_m");
+    if (load_node)
+      r.fail(*node, std::string("axes.") + key, "give only one of vertical_load_N, normal_load_N, approach_m");
     load_node = node;
     c.load_kind = kind;
     c.load_values = r.axis(*node, std::string("axes.") + key);
@@ -262,8 +269,9 @@ void check_table_size(const Reader& r, const TableConfig& c) {
   const double cases = static_cast<double>(c.lateral_displacement_m.size()) * static_cast<double>(c.load_values.size());
   const std::size_t line = r.line("axes", "lateral_displacement_m");
   if (cases > static_cast<double>(kMaxTableCases))
-    r.fail_at(line, "axes", std::to_string(static_cast<long long>(cases)) + " cases (max " + std::to_string(kMaxTableCases) +
-                                 "): reduce the dy range or increase the step, or use fewer load values");
+    r.fail_at(line, "axes",
+              std::to_string(static_cast<long long>(cases)) + " cases (max " + std::to_string(kMaxTableCases) +
+                  "): reduce the dy range or increase the step, or use fewer load values");
   const double bytes = table_memory_bytes(c);
   if (bytes > kMaxTableBytes)
     r.fail_at(line, "axes",
@@ -303,12 +311,13 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
     throw InputError(source, e.source().begin.line, std::string("TOML syntax: ") + std::string(e.description()));
   }
   const Reader r(root, source);
-  r.check_keys({{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
-                {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
-                {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
-                {"solver", {"mode", "method", "strip_width_m"}},
-                {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
-                {"output", {"strip_samples", "patch_slots"}}});
+  r.check_keys(
+      {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
+       {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
+       {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
+       {"solver", {"mode", "method", "strip_width_m"}},
+       {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
+       {"output", {"strip_samples", "patch_slots"}}});
   TableConfig c;
   c.source = source;
   c.text = text;
@@ -345,7 +354,8 @@ TableConfig read_table_config(const std::string& path) {
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
   for (std::string* spec : {&config.wheel, &config.rail}) {
     const std::string name = *spec;
-    const bool builtin = name == "S1002" || name == "s1002" || name == "UIC60" || name == "uic60" || name == "60E1" || name == "60e1";
+    const bool builtin =
+        name == "S1002" || name == "s1002" || name == "UIC60" || name == "uic60" || name == "60E1" || name == "60e1";
     if (!builtin && std::filesystem::path(name).is_relative()) *spec = (directory / name).lexically_normal().string();
   }
   return config;

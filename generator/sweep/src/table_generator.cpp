@@ -59,8 +59,7 @@ void equivalent_ellipse(double area_m2, double length_m, double width_m, double&
 }
 
 SweepSetupError::SweepSetupError(const TableConfig& config, std::string key, std::string reason)
-    : InputError(config.source, config.key_line(key), "'" + key + "': " + reason),
-      key_(std::move(key)),
+    : InputError(config.source, config.key_line(key), "'" + key + "': " + reason), key_(std::move(key)),
       reason_(std::move(reason)) {}
 
 namespace {
@@ -91,8 +90,10 @@ void check_strip_width(const TableConfig& config) {
 SweepSetup make_sweep_setup(const TableConfig& config) {
   check_strip_width(config);
   SweepSetup setup;
-  setup.wheel = std::make_unique<const ProfileTable>(load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel"));
-  setup.rail = std::make_unique<const ProfileTable>(load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail"));
+  setup.wheel =
+      std::make_unique<const ProfileTable>(load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel"));
+  setup.rail =
+      std::make_unique<const ProfileTable>(load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail"));
   setup.side = std::make_unique<const SideGeometry>(place_profiles(config, *setup.wheel, *setup.rail));
   setup.E_star_Pa = effective_modulus(config.material, config.material);
   setup.options.method = config.method;
@@ -144,7 +145,8 @@ CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_
   solution.solved = wheels;
   WheelContactWorkspace workspace;
   for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel)
-    if (wheels[wheel]) solution.wheels[wheel] = solve_case_wheel(setup, wheel, dy_m, solution.roll, load_value, workspace);
+    if (wheels[wheel])
+      solution.wheels[wheel] = solve_case_wheel(setup, wheel, dy_m, solution.roll, load_value, workspace);
   if (wheels == kBothWheels)
     solution.rolling_radius_difference_m = solution.wheels[0].contact.rigid_contact.rolling_radius_m -
                                            solution.wheels[1].contact.rigid_contact.rolling_radius_m;
@@ -158,7 +160,8 @@ namespace {
 // Linear interpolation of a strip profile at s (0 outside the strips).
 double sample_strips(const std::vector<PatchStrip>& strips, double s, bool pressure) {
   if (strips.empty() || s < strips.front().s_m || s > strips.back().s_m) return 0.0;
-  const auto upper = std::lower_bound(strips.begin(), strips.end(), s, [](const PatchStrip& a, double v) { return a.s_m < v; });
+  const auto upper =
+      std::lower_bound(strips.begin(), strips.end(), s, [](const PatchStrip& a, double v) { return a.s_m < v; });
   if (upper == strips.begin()) return pressure ? upper->p0_Pa : upper->half_length_m;
   const PatchStrip& hi = *upper;
   const PatchStrip& lo = *(upper - 1);
@@ -216,7 +219,8 @@ void store_patch(tables::Table& table, const ProfileTable& rail, std::size_t k, 
   equivalent_ellipse(patch.area_m2, longest, patch.s_max_m - patch.s_min_m, p.semi_axis_a_m[k], p.semi_axis_b_m[k]);
   const std::size_t n = table.strip_samples;
   for (std::size_t j = 0; j < n; ++j) {
-    const double s = patch.s_min_m + (patch.s_max_m - patch.s_min_m) * static_cast<double>(j) / static_cast<double>(n - 1);
+    const double s =
+        patch.s_min_m + (patch.s_max_m - patch.s_min_m) * static_cast<double>(j) / static_cast<double>(n - 1);
     p.strip_half_length_m[k * n + j] = sample_strips(patch.strips, s, false);
     p.strip_peak_pressure_Pa[k * n + j] = sample_strips(patch.strips, s, true);
   }
@@ -230,7 +234,8 @@ SlotCase slot_case(const CaseWheel& solved) {
   SlotCase out;
   out.success = !solved.exception && tables::is_success(case_status(solved.contact.status));
   if (out.success)
-    for (const ContactPatch& patch : solved.contact.patches) out.patches.push_back({patch.y_rail_m, patch.zone == "flange"});
+    for (const ContactPatch& patch : solved.contact.patches)
+      out.patches.push_back({patch.y_rail_m, patch.zone == "flange"});
   return out;
 }
 
@@ -320,16 +325,17 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, con
   std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(plan.threads));  // one per thread
   std::atomic<std::size_t> done{0};
   auto work = [&] {
-    // schedule(dynamic): the roll iteration costs more where the contact jumps.
+  // schedule(dynamic): the roll iteration costs more where the contact jumps.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
     for (std::size_t k = 0; k < n_rows; ++k) rolls[k] = solve_case_roll(setup, plan.dy_m[rows[k]]);
-    // schedule(dynamic): flange cases cost several times tread cases.
+      // schedule(dynamic): flange cases cost several times tread cases.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
     for (std::size_t task = 0; task < total; ++task) {
       const std::size_t side = task / row_cases, rest = task % row_cases;
       const std::size_t k = rest / n_second, i_second = rest % n_second;
       WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
-      results[task] = solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace);
+      results[task] =
+          solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace);
       done.fetch_add(1, std::memory_order_relaxed);
     }
   };
@@ -342,7 +348,9 @@ tables::Table empty_table(const TableConfig& config, const SweepPlan& plan) {
   table.lateral_displacement_m = plan.dy_m;
   table.second_axis = plan.load_values;
   table.second_axis_name = load_axis_name(config.load_kind);
-  table.second_axis_units = std::string(1, config.load_kind == LoadKind::Approach ? 'm' : 'N');  // not a literal: GCC 12 -Wrestrict false positive
+  table.second_axis_units =
+      std::string(1, config.load_kind == LoadKind::Approach ? 'm'
+                                                            : 'N');  // not a literal: GCC 12 -Wrestrict false positive
   table.strip_samples = config.strip_samples;
   table.n_slots = config.patch_slots;
   table.allocate();
@@ -350,8 +358,9 @@ tables::Table empty_table(const TableConfig& config, const SweepPlan& plan) {
 }
 
 // Stores the rows `rows` of the sweep's results (see sweep) in `table`.
-void assemble(tables::Table& table, const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
-              const std::vector<CaseRoll>& rolls, const std::vector<CaseWheel>& results) {
+void assemble(tables::Table& table, const SweepSetup& setup, const SweepPlan& plan,
+              const std::vector<std::size_t>& rows, const std::vector<CaseRoll>& rolls,
+              const std::vector<CaseWheel>& results) {
   const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size(), row_cases = rows.size() * n_second;
   std::vector<std::size_t> position(n_dy, n_dy);  // k of each selected row, n_dy elsewhere
   for (std::size_t k = 0; k < rows.size(); ++k) position[rows[k]] = k;
@@ -394,8 +403,10 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["created_utc"] = utc_now();
   text["wheel_profile"] = config.wheel;
   text["rail_profile"] = config.rail;
-  text["wheel_profile_sha256"] = sha256_hex(setup.wheel->z_samples().data(), setup.wheel->z_samples().size() * sizeof(double));
-  text["rail_profile_sha256"] = sha256_hex(setup.rail->z_samples().data(), setup.rail->z_samples().size() * sizeof(double));
+  text["wheel_profile_sha256"] =
+      sha256_hex(setup.wheel->z_samples().data(), setup.wheel->z_samples().size() * sizeof(double));
+  text["rail_profile_sha256"] =
+      sha256_hex(setup.rail->z_samples().data(), setup.rail->z_samples().size() * sizeof(double));
   text["rail_inclination"] = config.inclination_text;
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
   text["method"] = method_name(config.method);
@@ -443,7 +454,8 @@ void TableSweep::solve_rows(const std::vector<std::size_t>& rows, tables::Table&
   }
   if (mirrored())
     for (const std::size_t i : rows)
-      if (!selected[n - 1 - i]) throw std::invalid_argument("TableSweep::solve_rows: rows of a mirrored sweep must be mirror-closed");
+      if (!selected[n - 1 - i])
+        throw std::invalid_argument("TableSweep::solve_rows: rows of a mirrored sweep must be mirror-closed");
   std::vector<CaseRoll> rolls;
   const std::vector<CaseWheel> results = sweep(impl_->setup, impl_->plan, rows, rolls, progress);
   assemble(table, impl_->setup, impl_->plan, rows, rolls, results);

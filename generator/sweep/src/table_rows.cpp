@@ -37,8 +37,8 @@ std::vector<SlotArray> slot_arrays(tables::Table& t) {
                                    slot_array(p.strip_peak_pressure_Pa, t.strip_samples)};
   for (std::vector<double>* slot_values :
        {&p.normal_force_N, &p.force_lateral_N, &p.force_vertical_N, &p.area_m2, &p.max_pressure_Pa, &p.approach_m,
-        &p.contact_angle_rad, &p.plane_angle_rad, &p.s_origin_y_rail_m, &p.s_origin_z_rail_m, &p.y_wheel_m,
-        &p.y_rail_m, &p.y_cop_rail_m, &p.rolling_radius_m, &p.semi_axis_a_m, &p.semi_axis_b_m, &p.s_min_m, &p.s_max_m})
+        &p.contact_angle_rad, &p.plane_angle_rad, &p.s_origin_y_rail_m, &p.s_origin_z_rail_m, &p.y_wheel_m, &p.y_rail_m,
+        &p.y_cop_rail_m, &p.rolling_radius_m, &p.semi_axis_a_m, &p.semi_axis_b_m, &p.s_min_m, &p.s_max_m})
     arrays.push_back(slot_array(*slot_values, 1));
   return arrays;
 }

@@ -60,8 +60,9 @@ std::size_t integer_attribute(const ShardFile& shard, const char* name) {
   const auto& integers = shard.table.integer_attributes;
   const auto found = integers.find(name);
   if (found == integers.end() || found->second < 1 || found->second > static_cast<std::int64_t>(kMaxShards))
-    throw InputError(shard.path, 0, std::string("not a shard file (no valid '") + name +
-                                        "' attribute; a complete table needs no merge)");
+    throw InputError(shard.path, 0,
+                     std::string("not a shard file (no valid '") + name +
+                         "' attribute; a complete table needs no merge)");
   return static_cast<std::size_t>(found->second);
 }
 
@@ -76,13 +77,15 @@ ShardSpec parse_shard_spec(const std::string& text, const std::string& source) {
   ShardSpec spec;
   const auto slash = text.find('/');
   const char* const end = text.data() + text.size();
-  const auto [index_end, index_error] = std::from_chars(text.data(), text.data() + std::min(slash, text.size()), spec.index);
+  const auto [index_end, index_error] =
+      std::from_chars(text.data(), text.data() + std::min(slash, text.size()), spec.index);
   const bool index_ok = slash != std::string::npos && index_error == std::errc() && index_end == text.data() + slash;
-  const auto [count_end, count_error] =
-      index_ok ? std::from_chars(text.data() + slash + 1, end, spec.count) : std::from_chars_result{end, std::errc::invalid_argument};
+  const auto [count_end, count_error] = index_ok ? std::from_chars(text.data() + slash + 1, end, spec.count)
+                                                 : std::from_chars_result{end, std::errc::invalid_argument};
   if (!index_ok || count_error != std::errc() || count_end != end || spec.count < 1 || spec.count > kMaxShards ||
       spec.index < 1 || spec.index > spec.count)
-    throw InputError(source, 0, "expected K/N with 1 <= K <= N <= " + std::to_string(kMaxShards) + ", got '" + text + "'");
+    throw InputError(source, 0,
+                     "expected K/N with 1 <= K <= N <= " + std::to_string(kMaxShards) + ", got '" + text + "'");
   return spec;
 }
 
@@ -108,12 +111,13 @@ tables::Table merge_shards(std::vector<ShardFile> shards) {
   for (const ShardFile& shard : shards) {
     const std::size_t index = integer_attribute(shard, kShardIndex);
     if (integer_attribute(shard, kShardCount) != count || index > count)
-      throw InputError(shard.path, 0, "shard " + std::to_string(index) + "/" +
-                                          std::to_string(integer_attribute(shard, kShardCount)) + " is not one of " +
-                                          std::to_string(count) + " shards as " + shards.front().path + " is");
+      throw InputError(shard.path, 0,
+                       "shard " + std::to_string(index) + "/" + std::to_string(integer_attribute(shard, kShardCount)) +
+                           " is not one of " + std::to_string(count) + " shards as " + shards.front().path + " is");
     if (const auto [at, inserted] = by_index.emplace(index, &shard); !inserted)
-      throw InputError(shard.path, 0, "shard " + std::to_string(index) + "/" + std::to_string(count) +
-                                          " is given twice (also " + at->second->path + ")");
+      throw InputError(shard.path, 0,
+                       "shard " + std::to_string(index) + "/" + std::to_string(count) + " is given twice (also " +
+                           at->second->path + ")");
   }
   std::string missing;
   for (std::size_t k = 1; k <= count; ++k)
@@ -129,13 +133,15 @@ tables::Table merge_shards(std::vector<ShardFile> shards) {
   tables::Table merged = first.table;
   for (const auto& [index, shard] : by_index) {
     if (const std::string difference = shape_difference(first.table, shard->table); !difference.empty())
-      throw InputError(shard->path, 0, "does not belong with " + first.path + ": the " + difference +
-                                           " differs (shards of different configs, profiles or ctab builds)");
+      throw InputError(shard->path, 0,
+                       "does not belong with " + first.path + ": the " + difference +
+                           " differs (shards of different configs, profiles or ctab builds)");
     const std::vector<std::size_t> rows = shard_rows(units, index, count);
     const auto recorded = shard->table.text_attributes.find(kShardRows);
     if (recorded == shard->table.text_attributes.end() || recorded->second != format_rows(rows))
-      throw InputError(shard->path, 0, "its shard_rows attribute is not the rows of shard " + std::to_string(index) +
-                                           "/" + std::to_string(count) + " (" + format_rows(rows) + ")");
+      throw InputError(shard->path, 0,
+                       "its shard_rows attribute is not the rows of shard " + std::to_string(index) + "/" +
+                           std::to_string(count) + " (" + format_rows(rows) + ")");
     copy_rows(shard->table, merged, rows);
   }
   merged.integer_attributes.erase(kShardIndex);

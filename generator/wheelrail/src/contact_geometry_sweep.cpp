@@ -20,16 +20,15 @@ RigidContactRow rigid_contact(const SideGeometry& right, const SideGeometry& lef
   std::vector<GapMinimum> minima;
   double z = 0.0;
   for (const bool right_side : {true, false}) {
-    if (right_side)
-      right.gap_minima(dy_m, row.roll_rad, minima, z);
-    else
-      left.gap_minima(-dy_m, -row.roll_rad, minima, z);
+    if (right_side) right.gap_minima(dy_m, row.roll_rad, minima, z);
+    else left.gap_minima(-dy_m, -row.roll_rad, minima, z);
     if (!minima.empty()) {
       (right_side ? row.right : row.left) = minima.front();
     } else if (row.converged) {
       row.converged = false;
-      row.detail = std::string(right_side ? "the right" : "the left") + " wheel does not reach its rail at dy = " +
-                   std::to_string(dy_m) + " m (lateral shift beyond the profiles)";
+      row.detail = std::string(right_side ? "the right" : "the left") +
+                   " wheel does not reach its rail at dy = " + std::to_string(dy_m) +
+                   " m (lateral shift beyond the profiles)";
     }
   }
   row.rolling_radius_difference_m = row.right.rolling_radius_m - row.left.rolling_radius_m;
@@ -42,7 +41,8 @@ std::vector<ContactJump> find_contact_jumps(const std::vector<RigidContactRow>& 
     for (const bool right : {true, false}) {
       const double before = right ? rows[i - 1].right.wheel_s_m : rows[i - 1].left.wheel_s_m;
       const double after = right ? rows[i].right.wheel_s_m : rows[i].left.wheel_s_m;
-      if (std::abs(after - before) > threshold_m) jumps.push_back({rows[i - 1].dy_m, rows[i].dy_m, before, after, right});
+      if (std::abs(after - before) > threshold_m)
+        jumps.push_back({rows[i - 1].dy_m, rows[i].dy_m, before, after, right});
     }
   }
   return jumps;
@@ -63,8 +63,10 @@ double equivalent_conicity(const std::vector<double>& dy_m, const std::vector<do
   };
   const double top = V(amplitude_m);
   // Composite Gauss-Legendre (4 points on 64 panels) in theta on [0, pi/2].
-  static constexpr double kNodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
-  static constexpr double kWeights[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  static constexpr double kNodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                                       0.8611363115940526};
+  static constexpr double kWeights[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                                         0.3478548451374538};
   constexpr int kPanels = 64;
   const double width = std::numbers::pi / 2 / kPanels;
   double quarter = 0.0;

@@ -24,8 +24,8 @@ constexpr double kWindowFactor = 2.0;
 constexpr double kMinimumWindowDepth_m = 50e-6;
 constexpr double kWindowGrowth = 2.0;
 constexpr int kWindowAttempts = 4;
-constexpr int kMaxSamplesPerSide = 4000;       // chosen: 0.4 m at the 0.1 mm sample step, beyond any profile
-constexpr std::size_t kMinPatchSamples = 8;    // chosen: a window with fewer samples cannot hold 3 strips
+constexpr int kMaxSamplesPerSide = 4000;     // chosen: 0.4 m at the 0.1 mm sample step, beyond any profile
+constexpr std::size_t kMinPatchSamples = 8;  // chosen: a window with fewer samples cannot hold 3 strips
 // Newton on the wheel parameter S and on the plane-normal intersections: quadratic, 3-5 steps in practice.
 constexpr int kWheelPointSteps = 20;
 constexpr double kWheelPointTolerance_m = 1e-13;
@@ -51,9 +51,9 @@ std::string number_text(double value) {
 struct PatchProblem {
   GapMinimum reference;
   double angle = 0, c = 1, sn = 0;
-  double y0 = 0, z0 = 0;            // reference point on the rail (rail y, track z)
-  GapProfile gap;                   // y_m holds s
-  std::vector<double> rail_y;       // rail y below each sample
+  double y0 = 0, z0 = 0;       // reference point on the rail (rail y, track z)
+  GapProfile gap;              // y_m holds s
+  std::vector<double> rail_y;  // rail y below each sample
   std::unique_ptr<Mim1dSolver> solver;
   NormalSolution solution;
 };
@@ -65,10 +65,8 @@ std::string prepare_mim1d_solver(PatchProblem& p, double E_star, const Mim1dOpti
     return "patch needs " + number_text(strips) + " strips (max " + std::to_string(kMaxStripsPerPatch) +
            "): strip width too small";
   try {
-    if (p.solver && p.solver->matches(E_star, options))
-      p.solver->reset(p.gap);
-    else
-      p.solver = std::make_unique<Mim1dSolver>(p.gap, E_star, options);
+    if (p.solver && p.solver->matches(E_star, options)) p.solver->reset(p.gap);
+    else p.solver = std::make_unique<Mim1dSolver>(p.gap, E_star, options);
   } catch (const std::exception& e) {
     return std::string("MIM-1D set-up: ") + e.what();
   }
@@ -257,8 +255,8 @@ WheelContactWorkspace::~WheelContactWorkspace() = default;
 WheelContactWorkspace::WheelContactWorkspace(WheelContactWorkspace&&) noexcept = default;
 WheelContactWorkspace& WheelContactWorkspace::operator=(WheelContactWorkspace&&) noexcept = default;
 
-WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
-                                 double load_value, const WheelRailOptions& options) {
+WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
+                                 LoadKind load, double load_value, const WheelRailOptions& options) {
   WheelContactWorkspace workspace;
   return solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace);
 }
@@ -358,7 +356,8 @@ class WheelCase {
       result_.vertical_approach_m = main.solution.approach_m / main.c;
     }
     const SolveStatus status = main.solution.status;
-    if (!is_success(status) && status != SolveStatus::ZoneTruncated) detail_ = patch_failure(options_.method, main.solution, 0);
+    if (!is_success(status) && status != SolveStatus::ZoneTruncated)
+      detail_ = patch_failure(options_.method, main.solution, 0);
     return is_success(status) ? SolveStatus::Converged : status;
   }
 
@@ -376,7 +375,8 @@ class WheelCase {
       if (m.gap_m >= result_.vertical_approach_m || inside_window(m)) continue;
       PatchProblem& extra = ws_.acquire();
       extra.reference = m;
-      if (!builder_.build(extra, m.gap_m + depth, options_.sample_step_m) || !prepare(extra)) --ws_.used;  // give the slot back
+      if (!builder_.build(extra, m.gap_m + depth, options_.sample_step_m) || !prepare(extra))
+        --ws_.used;  // give the slot back
     }
     detail_.clear();  // a minimum that could not open a patch stays a near miss
   }
@@ -390,9 +390,9 @@ class WheelCase {
     }
     auto mismatch = [&](double dz) { return load_at(dz) - value_; };
     const double hi = result_.vertical_approach_m;
-    const RootResult root = find_root_bracketed(mismatch, 0.0, -value_, hi, mismatch(hi), kSharedApproachTolerance_m,
-                                                options_.mim1d.tolerance * value_ * kSharedForceToleranceFactor,
-                                                kSharedApproachIterations);
+    const RootResult root =
+        find_root_bracketed(mismatch, 0.0, -value_, hi, mismatch(hi), kSharedApproachTolerance_m,
+                            options_.mim1d.tolerance * value_ * kSharedForceToleranceFactor, kSharedApproachIterations);
     if (!root.converged) {
       detail_ = "the vertical approach shared by " + std::to_string(ws_.used) + " patches did not converge in " +
                 std::to_string(kSharedApproachIterations) + " root-finding steps";
@@ -449,7 +449,8 @@ class WheelCase {
       if (p.solution.status == SolveStatus::NoContact) continue;
       if (!is_success(p.solution.status)) {
         status = p.solution.status;
-        if (detail_.empty() || p.solution.status != SolveStatus::ZoneTruncated) detail_ = patch_failure(options_.method, p.solution, slot);
+        if (detail_.empty() || p.solution.status != SolveStatus::ZoneTruncated)
+          detail_ = patch_failure(options_.method, p.solution, slot);
       }
       for (const PatchSolution& ps : p.solution.patches) add_patch(p, ps);
     }
@@ -503,7 +504,8 @@ class WheelCase {
   GapMinimum contact_point(const PatchProblem& p, const PatchSolution& ps) const {
     std::size_t deepest = p.gap.size();
     for (std::size_t i = 0; i < p.gap.size(); ++i)
-      if (p.gap.y_m[i] >= ps.y_min_m && p.gap.y_m[i] <= ps.y_max_m && (deepest == p.gap.size() || p.gap.h_m[i] < p.gap.h_m[deepest]))
+      if (p.gap.y_m[i] >= ps.y_min_m && p.gap.y_m[i] <= ps.y_max_m &&
+          (deepest == p.gap.size() || p.gap.h_m[i] < p.gap.h_m[deepest]))
         deepest = i;
     const bool holds_reference = ps.y_min_m <= 0.0 && ps.y_max_m >= 0.0;
     GapMinimum point = p.reference;
@@ -547,8 +549,9 @@ class WheelCase {
 
 }  // namespace
 
-WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
-                                 double load_value, const WheelRailOptions& options, WheelContactWorkspace& workspace) {
+WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
+                                 LoadKind load, double load_value, const WheelRailOptions& options,
+                                 WheelContactWorkspace& workspace) {
   return WheelCase(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace.impl()).solve();
 }
 

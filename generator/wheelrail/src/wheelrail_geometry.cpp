@@ -14,8 +14,9 @@ SideGeometry::SideGeometry(const ProfileTable& wheel, const ProfileTable& rail, 
     : wheel_(&wheel), rail_(&rail), track_(track) {
   double gauge_point = 0.0;
   if (!rail.first_y_at_depth(track.gauge_height_m, gauge_point))
-    throw InputError(rail.name(), 0, "rail profile does not reach the gauge height " +
-                                         std::to_string(track.gauge_height_m * 1e3) + " mm below its top");
+    throw InputError(rail.name(), 0,
+                     "rail profile does not reach the gauge height " + std::to_string(track.gauge_height_m * 1e3) +
+                         " mm below its top");
   rail_origin_y_ = 0.5 * track.gauge_m - gauge_point;
   wheel_origin_y_ = 0.5 * track.flange_back_distance_m - track.flange_back_position_m;
 }
@@ -94,15 +95,24 @@ static double refine_minimum(const SideGeometry& side, double dy_m, double roll_
   double f1 = side.gap_rotated(x1, dy_m, c, sn), f2 = side.gap_rotated(x2, dy_m, c, sn);
   for (int i = 0; i < 48 && hi - lo > 1e-10; ++i) {
     if (f1 < f2) {
-      hi = x2; x2 = x1; f2 = f1; x1 = hi - ratio * (hi - lo); f1 = side.gap_rotated(x1, dy_m, c, sn);
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - ratio * (hi - lo);
+      f1 = side.gap_rotated(x1, dy_m, c, sn);
     } else {
-      lo = x1; x1 = x2; f1 = f2; x2 = lo + ratio * (hi - lo); f2 = side.gap_rotated(x2, dy_m, c, sn);
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + ratio * (hi - lo);
+      f2 = side.gap_rotated(x2, dy_m, c, sn);
     }
   }
   return 0.5 * (lo + hi);
 }
 
-void SideGeometry::gap_minima(double dy_m, double roll_rad, std::vector<GapMinimum>& minima, double& first_contact_z_m) const {
+void SideGeometry::gap_minima(double dy_m, double roll_rad, std::vector<GapMinimum>& minima,
+                              double& first_contact_z_m) const {
   minima.clear();
   thread_local std::vector<CoarseMinimum> coarse;
   double step = 0, s_begin = 0, s_end = 0;
@@ -128,18 +138,21 @@ double SideGeometry::first_contact_height(double dy_m, double roll_rad) const {
   coarse_minima(*this, dy_m, roll_rad, coarse, step, s_begin, s_end);
   if (coarse.empty()) return std::numeric_limits<double>::quiet_NaN();
   // The two lowest coarse minima can swap order on refinement (near-conformal tread); refine both.
-  std::partial_sort(coarse.begin(), coarse.begin() + std::min<std::ptrdiff_t>(2, static_cast<std::ptrdiff_t>(coarse.size())),
+  std::partial_sort(coarse.begin(),
+                    coarse.begin() + std::min<std::ptrdiff_t>(2, static_cast<std::ptrdiff_t>(coarse.size())),
                     coarse.end(), [](const CoarseMinimum& a, const CoarseMinimum& b) { return a.gap < b.gap; });
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < std::min<std::size_t>(2, coarse.size()); ++k)
-    lowest = std::min(lowest, gap(refine_minimum(*this, dy_m, roll_rad, coarse[k].s, step, s_begin, s_end), dy_m, roll_rad));
+    lowest =
+        std::min(lowest, gap(refine_minimum(*this, dy_m, roll_rad, coarse[k].s, step, s_begin, s_end), dy_m, roll_rad));
   return lowest;
 }
 
 namespace {
 
 // Roll iteration (rigid_wheelset_pose): the bracket starts at +-20 mrad (chosen: covers |dy| <= 12 mm on S1002/UIC60,
-// measured up to 3 mrad) and doubles up to kRollBracketWidenings times (+-320 mrad, far beyond a wheelset on its rails).
+// measured up to 3 mrad) and doubles up to kRollBracketWidenings times (+-320 mrad, far beyond a wheelset on its
+// rails).
 constexpr double kInitialRollBracket_rad = 0.02;
 constexpr int kRollBracketWidenings = 4;
 constexpr double kRollTolerance_rad = 1e-13;
@@ -155,7 +168,8 @@ std::string shift_text(double dy_m) {
 // Why the roll iteration failed, in words.
 std::string roll_failure(double dy_m, double f_lo, double f_hi, double bracket_rad) {
   if (!std::isfinite(f_lo) || !std::isfinite(f_hi))
-    return "wheelset roll: a wheel does not reach its rail at " + shift_text(dy_m) + " (lateral shift beyond the profiles)";
+    return "wheelset roll: a wheel does not reach its rail at " + shift_text(dy_m) +
+           " (lateral shift beyond the profiles)";
   if ((f_lo > 0.0) == (f_hi > 0.0))
     return "wheelset roll: no roll angle within +-" + std::to_string(bracket_rad) + " rad lets both wheels touch at " +
            shift_text(dy_m);
@@ -185,7 +199,8 @@ WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& 
     f_lo = mismatch(lo);
     f_hi = mismatch(hi);
   }
-  const RootResult root = find_root_bracketed(mismatch, lo, f_lo, hi, f_hi, kRollTolerance_rad, kHeightTolerance_m, kRollIterations);
+  const RootResult root =
+      find_root_bracketed(mismatch, lo, f_lo, hi, f_hi, kRollTolerance_rad, kHeightTolerance_m, kRollIterations);
   pose.converged = root.converged;
   pose.roll_rad = root.x;
   heights(pose.roll_rad, pose.z_right_m, pose.z_left_m);

@@ -20,25 +20,25 @@ extern "C" {
 #define CTAB_API
 #endif
 
-#define CTAB_MAX_SLOTS 16      /* most patch slots per wheel (= ctab::tables::kMaxSlots) */
+#define CTAB_MAX_SLOTS 16 /* most patch slots per wheel (= ctab::tables::kMaxSlots) */
 #define CTAB_WHEEL_RIGHT 0
 #define CTAB_WHEEL_LEFT 1
 
 /* Status of a load or a query. 0 ok, 1 usable with a caveat, < 0 failure. */
 typedef enum ctab_status {
   CTAB_OK = 0,
-  CTAB_CLAMPED = 1,                /* query outside the table range: answered at the nearest edge */
-  CTAB_INVALID_INPUT = -1,         /* NaN/infinite input, wheel/slot out of range, null pointer: outputs zeroed */
-  CTAB_NOT_LOADED = -2,            /* null table handle: outputs zeroed */
-  CTAB_ERR_CANNOT_OPEN = -10,      /* file missing or unreadable */
-  CTAB_ERR_NOT_A_TABLE = -11,      /* neither a ctab blob nor (with ctab_lookup_hdf5) an HDF5 table; truncated */
-  CTAB_ERR_VERSION = -12,          /* blob format or table schema version not supported */
-  CTAB_ERR_CHECKSUM = -13,         /* blob payload does not match its checksum */
-  CTAB_ERR_AXES = -14,             /* axes too short, not finite, not increasing, or dy not uniform */
-  CTAB_ERR_SHAPE = -15,            /* array sizes do not match the axes, slots or strip samples */
-  CTAB_ERR_CONTENT = -16,          /* non-finite value, unknown case status, presence not 0/1, bad jump */
+  CTAB_CLAMPED = 1,           /* query outside the table range: answered at the nearest edge */
+  CTAB_INVALID_INPUT = -1,    /* NaN/infinite input, wheel/slot out of range, null pointer: outputs zeroed */
+  CTAB_NOT_LOADED = -2,       /* null table handle: outputs zeroed */
+  CTAB_ERR_CANNOT_OPEN = -10, /* file missing or unreadable */
+  CTAB_ERR_NOT_A_TABLE = -11, /* neither a ctab blob nor (with ctab_lookup_hdf5) an HDF5 table; truncated */
+  CTAB_ERR_VERSION = -12,     /* blob format or table schema version not supported */
+  CTAB_ERR_CHECKSUM = -13,    /* blob payload does not match its checksum */
+  CTAB_ERR_AXES = -14,        /* axes too short, not finite, not increasing, or dy not uniform */
+  CTAB_ERR_SHAPE = -15,       /* array sizes do not match the axes, slots or strip samples */
+  CTAB_ERR_CONTENT = -16,     /* non-finite value, unknown case status, presence not 0/1, bad jump */
   CTAB_ERR_OUT_OF_MEMORY = -17,
-  CTAB_ERR_HDF5_UNAVAILABLE = -18  /* an HDF5 file given to a build without ctab_lookup_hdf5: export a blob */
+  CTAB_ERR_HDF5_UNAVAILABLE = -18 /* an HDF5 file given to a build without ctab_lookup_hdf5: export a blob */
 } ctab_status;
 
 /* Interpolation along the lateral displacement dy (the second axis is always linear). */
@@ -55,23 +55,23 @@ typedef struct ctab_open_options {
 /* Indices of the tabulated quantities in ctab_patch.q. Frames as in tables/README.md (each wheel in its own side
  * frame: y lateral + to the field side, z vertical + down); forces are those of the wheel on the rail. */
 typedef enum ctab_quantity {
-  CTAB_NORMAL_FORCE_N = 0,          /* resultant normal force [N] */
-  CTAB_FORCE_LATERAL_N = 1,         /* lateral component on the rail, + to the field side [N] */
-  CTAB_FORCE_VERTICAL_N = 2,        /* vertical component on the rail, + downwards [N] */
-  CTAB_AREA_M2 = 3,                 /* contact area [m^2] */
-  CTAB_MAX_PRESSURE_PA = 4,         /* [Pa] */
-  CTAB_APPROACH_M = 5,              /* normal approach of the patch [m] */
-  CTAB_CONTACT_ANGLE_RAD = 6,       /* direction of the resultant force [rad] */
-  CTAB_PLANE_ANGLE_RAD = 7,         /* inclination of the contact plane in which s is measured [rad] */
-  CTAB_S_ORIGIN_Y_RAIL_M = 8,       /* rail point where s = 0, lateral [m] */
-  CTAB_S_ORIGIN_Z_RAIL_M = 9,       /* rail point where s = 0, vertical + down [m] */
-  CTAB_Y_WHEEL_M = 10,               /* contact point on the wheel profile [m] */
-  CTAB_Y_RAIL_M = 11,                /* contact point on the rail profile [m] */
-  CTAB_Y_COP_RAIL_M = 12,            /* centre of pressure on the rail profile [m] */
-  CTAB_ROLLING_RADIUS_M = 13,        /* [m] */
-  CTAB_SEMI_AXIS_A_M = 14,           /* equivalent ellipse, rolling direction [m] */
-  CTAB_SEMI_AXIS_B_M = 15,           /* equivalent ellipse, lateral [m] */
-  CTAB_S_MIN_M = 16,                 /* lateral extent of the patch in its contact plane [m] */
+  CTAB_NORMAL_FORCE_N = 0,    /* resultant normal force [N] */
+  CTAB_FORCE_LATERAL_N = 1,   /* lateral component on the rail, + to the field side [N] */
+  CTAB_FORCE_VERTICAL_N = 2,  /* vertical component on the rail, + downwards [N] */
+  CTAB_AREA_M2 = 3,           /* contact area [m^2] */
+  CTAB_MAX_PRESSURE_PA = 4,   /* [Pa] */
+  CTAB_APPROACH_M = 5,        /* normal approach of the patch [m] */
+  CTAB_CONTACT_ANGLE_RAD = 6, /* direction of the resultant force [rad] */
+  CTAB_PLANE_ANGLE_RAD = 7,   /* inclination of the contact plane in which s is measured [rad] */
+  CTAB_S_ORIGIN_Y_RAIL_M = 8, /* rail point where s = 0, lateral [m] */
+  CTAB_S_ORIGIN_Z_RAIL_M = 9, /* rail point where s = 0, vertical + down [m] */
+  CTAB_Y_WHEEL_M = 10,        /* contact point on the wheel profile [m] */
+  CTAB_Y_RAIL_M = 11,         /* contact point on the rail profile [m] */
+  CTAB_Y_COP_RAIL_M = 12,     /* centre of pressure on the rail profile [m] */
+  CTAB_ROLLING_RADIUS_M = 13, /* [m] */
+  CTAB_SEMI_AXIS_A_M = 14,    /* equivalent ellipse, rolling direction [m] */
+  CTAB_SEMI_AXIS_B_M = 15,    /* equivalent ellipse, lateral [m] */
+  CTAB_S_MIN_M = 16,          /* lateral extent of the patch in its contact plane [m] */
   CTAB_S_MAX_M = 17,
   CTAB_QUANTITIES = 18
 } ctab_quantity;
@@ -85,13 +85,13 @@ typedef struct ctab_patch {
 
 /* Where a query point lies in the table: computed once, reusable for both wheels and every quantity. */
 typedef struct ctab_location {
-  uint32_t i_dy;      /* cell (i_dy, i_dy + 1) of the dy axis */
-  uint32_t i_second;  /* cell (i_second, i_second + 1) of the second axis (0 when it has one value) */
-  double f_dy;        /* fraction in [0, 1] inside the dy cell */
-  double f_second;    /* fraction in [0, 1] inside the second-axis cell (0 when it has one value) */
-  double dy_m;        /* the query point actually used (clamped) [m] */
-  double second;      /* second-axis value actually used (clamped), in its units */
-  int32_t status;     /* CTAB_OK, CTAB_CLAMPED, CTAB_INVALID_INPUT or CTAB_NOT_LOADED */
+  uint32_t i_dy;     /* cell (i_dy, i_dy + 1) of the dy axis */
+  uint32_t i_second; /* cell (i_second, i_second + 1) of the second axis (0 when it has one value) */
+  double f_dy;       /* fraction in [0, 1] inside the dy cell */
+  double f_second;   /* fraction in [0, 1] inside the second-axis cell (0 when it has one value) */
+  double dy_m;       /* the query point actually used (clamped) [m] */
+  double second;     /* second-axis value actually used (clamped), in its units */
+  int32_t status;    /* CTAB_OK, CTAB_CLAMPED, CTAB_INVALID_INPUT or CTAB_NOT_LOADED */
   int32_t reserved;
 } ctab_location;
 
@@ -113,7 +113,7 @@ typedef struct ctab_table ctab_table; /* opaque, immutable after load */
 /* Loading (allocates). `options` may be NULL (defaults). On failure *table is NULL. */
 CTAB_API ctab_status ctab_table_open(const char* path, const ctab_open_options* options, ctab_table** table);
 CTAB_API ctab_status ctab_table_open_memory(const void* data, size_t size, const ctab_open_options* options,
-                                   ctab_table** table);
+                                            ctab_table** table);
 CTAB_API void ctab_table_close(ctab_table* table); /* NULL is fine */
 
 /* Table description. */
@@ -121,26 +121,28 @@ CTAB_API uint32_t ctab_table_dy_count(const ctab_table* table);
 CTAB_API uint32_t ctab_table_second_count(const ctab_table* table);
 CTAB_API uint32_t ctab_table_slot_count(const ctab_table* table);
 CTAB_API uint32_t ctab_table_strip_samples(const ctab_table* table);
-CTAB_API double ctab_table_dy_min(const ctab_table* table);    /* [m] */
-CTAB_API double ctab_table_dy_max(const ctab_table* table);    /* [m] */
-CTAB_API double ctab_table_second_value(const ctab_table* table, uint32_t i); /* second axis value i; NaN if out of range */
-CTAB_API const char* ctab_table_second_axis_name(const ctab_table* table); /* "vertical_load_N", "normal_load_N", "approach_m" */
+CTAB_API double ctab_table_dy_min(const ctab_table* table); /* [m] */
+CTAB_API double ctab_table_dy_max(const ctab_table* table); /* [m] */
+CTAB_API double ctab_table_second_value(const ctab_table* table,
+                                        uint32_t i); /* second axis value i; NaN if out of range */
+CTAB_API const char* ctab_table_second_axis_name(
+    const ctab_table* table); /* "vertical_load_N", "normal_load_N", "approach_m" */
 CTAB_API size_t ctab_table_memory_bytes(const ctab_table* table);
 
 /* Queries (no allocation, lock, system call or data-dependent time). `second` is ignored when the table has
  * one second-axis value. `wheel` is CTAB_WHEEL_RIGHT or CTAB_WHEEL_LEFT. */
 CTAB_API ctab_status ctab_prelookup(const ctab_table* table, double dy_m, double second, ctab_location* out);
 CTAB_API ctab_status ctab_query_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
-                                 ctab_result* out);
+                                          ctab_result* out);
 CTAB_API ctab_status ctab_query(const ctab_table* table, double dy_m, double second, int32_t wheel, ctab_result* out);
 
 /* Strip profile of one slot at a prelooked point: `capacity` >= ctab_table_strip_samples(); writes s [m]
  * (evenly spread over the interpolated [s_min, s_max]), half-length a(s) [m] and peak pressure p0(s) [Pa]
  * (any of the three may be NULL), and *count (the samples written; 0 where the patch is absent). Same rule as
  * the patch quantities at jumps. */
-CTAB_API ctab_status ctab_strip_profile(const ctab_table* table, const ctab_location* where, int32_t wheel, int32_t slot,
-                               double* s_m, double* half_length_m, double* peak_pressure_Pa, uint32_t capacity,
-                               uint32_t* count);
+CTAB_API ctab_status ctab_strip_profile(const ctab_table* table, const ctab_location* where, int32_t wheel,
+                                        int32_t slot, double* s_m, double* half_length_m, double* peak_pressure_Pa,
+                                        uint32_t capacity, uint32_t* count);
 
 /* A static English sentence for any status value (never NULL). */
 CTAB_API const char* ctab_status_message(int32_t status);

@@ -48,7 +48,8 @@ class Table {
   [[nodiscard]] ctab_interpolation interpolation() const noexcept { return interpolation_; }
   [[nodiscard]] bool single_precision() const noexcept { return !records_f_.empty(); }
   //! How slot `slot` is blended in the dy cell (i_dy, i_dy + 1).
-  [[nodiscard]] CellRule rule(std::size_t i_dy, std::size_t i_second, std::size_t wheel, std::size_t slot) const noexcept {
+  [[nodiscard]] CellRule rule(std::size_t i_dy, std::size_t i_second, std::size_t wheel,
+                              std::size_t slot) const noexcept {
     return static_cast<CellRule>(static_cast<int>(field(case_(i_dy, i_second, wheel), off_rule_ + slot)));
   }
   //! Bytes held by this table (all arrays).
@@ -72,8 +73,8 @@ class Table {
   void query_rows(const ctab_location& where, std::uint32_t wheel, ctab_result& out) const noexcept;
   //! One slot between two case records: values into v (kQuantities), returns the presence (0 or 1).
   template <typename T, bool kCubic>
-  double dy_slot(const T* lo, const T* hi, const T* slope_lo, const T* slope_hi, std::size_t slot,
-                 const DyBasis& basis, double* v) const noexcept;
+  double dy_slot(const T* lo, const T* hi, const T* slope_lo, const T* slope_hi, std::size_t slot, const DyBasis& basis,
+                 double* v) const noexcept;
   template <typename T, bool kCubic>
   void wheelset(const ctab_location& where, std::uint32_t wheel, const DyBasis& basis, ctab_result& out) const noexcept;
   //! Index of case (i_dy, i_second, wheel).

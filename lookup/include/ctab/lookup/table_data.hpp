@@ -34,11 +34,11 @@ struct Jump {
 };
 
 struct TableData {
-  std::vector<double> dy_m;       //!< lateral displacement, uniform and strictly increasing (n_dy >= 2) [m]
-  std::vector<double> second;     //!< second axis, strictly increasing (n_second >= 1)
+  std::vector<double> dy_m;    //!< lateral displacement, uniform and strictly increasing (n_dy >= 2) [m]
+  std::vector<double> second;  //!< second axis, strictly increasing (n_second >= 1)
   SecondAxis second_axis = SecondAxis::VerticalLoad;
-  std::size_t n_slots = 3;        //!< 1..kMaxSlots
-  std::size_t strip_samples = 0;  //!< 0 (none) or 2..kMaxStripSamples
+  std::size_t n_slots = 3;                          //!< 1..kMaxSlots
+  std::size_t strip_samples = 0;                    //!< 0 (none) or 2..kMaxStripSamples
   std::vector<double> roll_rad;                     //!< (n_dy x n_second)
   std::vector<double> rolling_radius_difference_m;  //!< (n_dy x n_second)
   std::vector<std::int8_t> case_status;             //!< (n_dy x n_second x kWheels), tables::CaseStatus values

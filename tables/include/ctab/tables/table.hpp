@@ -17,10 +17,10 @@
 
 namespace ctab::tables {
 
-inline constexpr int kSchemaVersion = 2;          //!< readers reject any other version
-inline constexpr std::size_t kWheels = 2;         //!< index 0: right wheel, 1: left wheel
-inline constexpr std::size_t kDefaultSlots = 3;   //!< patch slots unless the config asks for more
-inline constexpr std::size_t kMaxSlots = 16;      //!< most patch slots a table may have
+inline constexpr int kSchemaVersion = 2;               //!< readers reject any other version
+inline constexpr std::size_t kWheels = 2;              //!< index 0: right wheel, 1: left wheel
+inline constexpr std::size_t kDefaultSlots = 3;        //!< patch slots unless the config asks for more
+inline constexpr std::size_t kMaxSlots = 16;           //!< most patch slots a table may have
 inline constexpr std::size_t kMaxStripSamples = 4096;  //!< most strip-profile samples per patch
 
 //! How a patch changes between two neighbouring lateral shifts (a cell of the dy axis).
@@ -43,31 +43,31 @@ struct Jump {
 //! Per-patch scalar quantities, each an array of shape (n_dy x n_second x kWheels x n_slots).
 //! Every value is 0 where `present` is 0.
 struct PatchQuantities {
-  std::vector<std::uint8_t> present;          //!< 1 where the slot holds a patch, else 0
-  std::vector<double> normal_force_N;         //!< resultant normal force [N]
-  std::vector<double> force_lateral_N;        //!< lateral component on the rail in the side frame, + to the field side [N]
-  std::vector<double> force_vertical_N;       //!< vertical component on the rail, + downwards [N]
-  std::vector<double> area_m2;                //!< [m^2]
-  std::vector<double> max_pressure_Pa;        //!< [Pa]
-  std::vector<double> approach_m;             //!< normal approach of the patch [m]
+  std::vector<std::uint8_t> present;     //!< 1 where the slot holds a patch, else 0
+  std::vector<double> normal_force_N;    //!< resultant normal force [N]
+  std::vector<double> force_lateral_N;   //!< lateral component on the rail in the side frame, + to the field side [N]
+  std::vector<double> force_vertical_N;  //!< vertical component on the rail, + downwards [N]
+  std::vector<double> area_m2;           //!< [m^2]
+  std::vector<double> max_pressure_Pa;   //!< [Pa]
+  std::vector<double> approach_m;        //!< normal approach of the patch [m]
   //! Direction of the resultant normal force as reported by the solver: the load-weighted mean rail inclination
   //! over the patch's strips (< 0 on the gauge side). The force components use plane_angle_rad instead
   //! (lateral = -N sin(plane), vertical = N cos(plane)); the two angles differ on a curved patch [rad]
   std::vector<double> contact_angle_rad;
-  std::vector<double> plane_angle_rad;        //!< inclination of the contact plane in which s is measured [rad]
-  std::vector<double> s_origin_y_rail_m;      //!< rail point where s = 0 (lateral) [m]
-  std::vector<double> s_origin_z_rail_m;      //!< rail point where s = 0 (vertical, + down) [m]
-  std::vector<double> y_wheel_m;              //!< contact point on the wheel profile (tape circle origin) [m]
-  std::vector<double> y_rail_m;               //!< contact point on the rail profile (head top origin) [m]
-  std::vector<double> y_cop_rail_m;           //!< centre of pressure on the rail profile [m]
-  std::vector<double> rolling_radius_m;       //!< [m]
-  std::vector<double> semi_axis_a_m;          //!< equivalent ellipse, rolling direction [m]
-  std::vector<double> semi_axis_b_m;          //!< equivalent ellipse, lateral [m]
-  std::vector<double> s_min_m, s_max_m;       //!< lateral extent of the patch in its contact plane [m]
+  std::vector<double> plane_angle_rad;    //!< inclination of the contact plane in which s is measured [rad]
+  std::vector<double> s_origin_y_rail_m;  //!< rail point where s = 0 (lateral) [m]
+  std::vector<double> s_origin_z_rail_m;  //!< rail point where s = 0 (vertical, + down) [m]
+  std::vector<double> y_wheel_m;          //!< contact point on the wheel profile (tape circle origin) [m]
+  std::vector<double> y_rail_m;           //!< contact point on the rail profile (head top origin) [m]
+  std::vector<double> y_cop_rail_m;       //!< centre of pressure on the rail profile [m]
+  std::vector<double> rolling_radius_m;   //!< [m]
+  std::vector<double> semi_axis_a_m;      //!< equivalent ellipse, rolling direction [m]
+  std::vector<double> semi_axis_b_m;      //!< equivalent ellipse, lateral [m]
+  std::vector<double> s_min_m, s_max_m;   //!< lateral extent of the patch in its contact plane [m]
   //! Strip profiles resampled on strip_samples points evenly spread over [s_min, s_max], shape
   //! (n_dy x n_second x kWheels x n_slots x strip_samples).
-  std::vector<double> strip_half_length_m;    //!< a(s) [m]
-  std::vector<double> strip_peak_pressure_Pa; //!< p0(s) [Pa]
+  std::vector<double> strip_half_length_m;     //!< a(s) [m]
+  std::vector<double> strip_peak_pressure_Pa;  //!< p0(s) [Pa]
 };
 
 struct Table {
@@ -78,10 +78,11 @@ struct Table {
   std::size_t n_slots = kDefaultSlots;         //!< patch slots per wheel (1..kMaxSlots)
   std::size_t strip_samples = 0;               //!< samples per strip profile (2..kMaxStripSamples)
   std::vector<double> roll_rad;                //!< wheelset roll (n_dy x n_second) [rad]
-  std::vector<double> rolling_radius_difference_m;  //!< r_right - r_left at the rigid contact points (n_dy x n_second) [m]
-  std::vector<CaseStatus> status;              //!< per wheel (n_dy x n_second x kWheels)
+  std::vector<double>
+      rolling_radius_difference_m;  //!< r_right - r_left at the rigid contact points (n_dy x n_second) [m]
+  std::vector<CaseStatus> status;   //!< per wheel (n_dy x n_second x kWheels)
   PatchQuantities patch;
-  std::vector<Jump> jumps;                     //!< sorted by (i_second, wheel, slot, i_dy)
+  std::vector<Jump> jumps;                                 //!< sorted by (i_second, wheel, slot, i_dy)
   std::map<std::string, std::string> text_attributes;      //!< provenance, UTF-8 (see README)
   std::map<std::string, double> number_attributes;         //!< provenance numbers (material, ...)
   std::map<std::string, std::int64_t> integer_attributes;  //!< provenance integers (threads, ...)
@@ -110,11 +111,11 @@ struct Table {
 enum class TableStatus : std::int8_t {
   Ok = 0,
   CannotOpen = -1,
-  NotATable = -2,          //!< not HDF5, or truncated
-  WrongSchemaVersion = -3, //!< includes schema 1 (the message says how to regenerate)
+  NotATable = -2,           //!< not HDF5, or truncated
+  WrongSchemaVersion = -3,  //!< includes schema 1 (the message says how to regenerate)
   MissingDataset = -4,
   WrongShape = -5,
-  InvalidContent = -6,     //!< non-finite or out-of-range values, bad axes, unknown status, bad attributes
+  InvalidContent = -6,  //!< non-finite or out-of-range values, bad axes, unknown status, bad attributes
   WriteFailed = -7,
 };
 

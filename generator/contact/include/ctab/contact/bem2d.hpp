@@ -33,12 +33,12 @@ namespace ctab::gen {
 //! The full pressure field of a bem2d solve (for accuracy charts): element (i, j) has its centre at
 //! x = x0 + i dx, y = y0 + j dy and pressure pressure_Pa[j * nx + i].
 struct Bem2dPressureField {
-  std::size_t nx = 0;           //!< elements along x [-]
-  std::size_t ny = 0;           //!< elements along y [-]
-  double dx_m = 0.0;            //!< element length [m]
-  double dy_m = 0.0;            //!< element width [m]
-  double x0_m = 0.0;            //!< centre of the first element along x [m]
-  double y0_m = 0.0;            //!< centre of the first element along y [m]
+  std::size_t nx = 0;               //!< elements along x [-]
+  std::size_t ny = 0;               //!< elements along y [-]
+  double dx_m = 0.0;                //!< element length [m]
+  double dy_m = 0.0;                //!< element width [m]
+  double x0_m = 0.0;                //!< centre of the first element along x [m]
+  double y0_m = 0.0;                //!< centre of the first element along y [m]
   std::vector<double> pressure_Pa;  //!< ny x nx, row j (one y) after row j - 1 [Pa]
 
   [[nodiscard]] double at(std::size_t i, std::size_t j) const { return pressure_Pa[j * nx + i]; }

@@ -10,11 +10,11 @@
 namespace ctab::gen {
 
 struct GapProfile {
-  std::vector<double> y_m;        //!< lateral coordinate, strictly increasing [m]
-  std::vector<double> h_m;        //!< undeformed separation [m]
-  std::vector<double> A_per_m;    //!< relative curvature in the rolling direction, > 0 [1/m]
-  std::vector<double> B_per_m;    //!< relative curvature in the lateral direction [1/m] (may be <= 0)
-  std::string source = "gap";     //!< where it came from, for error messages
+  std::vector<double> y_m;      //!< lateral coordinate, strictly increasing [m]
+  std::vector<double> h_m;      //!< undeformed separation [m]
+  std::vector<double> A_per_m;  //!< relative curvature in the rolling direction, > 0 [1/m]
+  std::vector<double> B_per_m;  //!< relative curvature in the lateral direction [1/m] (may be <= 0)
+  std::string source = "gap";   //!< where it came from, for error messages
 
   [[nodiscard]] std::size_t size() const noexcept { return y_m.size(); }
 };

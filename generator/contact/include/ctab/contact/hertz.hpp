@@ -32,18 +32,20 @@ struct HertzCoefficients {
 //! A full Hertz solution.
 struct HertzContact {
   SolveStatus status = SolveStatus::InvalidInput;
-  double semi_axis_x_m = 0.0;     //!< a, along the rolling direction [m]
-  double semi_axis_y_m = 0.0;     //!< b, lateral [m]
-  double max_pressure_Pa = 0.0;   //!< p0 [Pa]
-  double approach_m = 0.0;        //!< rigid approach delta [m]
-  double normal_force_N = 0.0;    //!< N [N]
-  double area_m2 = 0.0;           //!< pi a b [m^2]
+  double semi_axis_x_m = 0.0;    //!< a, along the rolling direction [m]
+  double semi_axis_y_m = 0.0;    //!< b, lateral [m]
+  double max_pressure_Pa = 0.0;  //!< p0 [Pa]
+  double approach_m = 0.0;       //!< rigid approach delta [m]
+  double normal_force_N = 0.0;   //!< N [N]
+  double area_m2 = 0.0;          //!< pi a b [m^2]
 };
 
 //! Hertz contact for a prescribed normal force N >= 0 [N]; E* [Pa].
-[[nodiscard]] HertzContact hertz_from_load(double A_per_m, double B_per_m, double E_star_Pa, double normal_force_N) noexcept;
+[[nodiscard]] HertzContact hertz_from_load(double A_per_m, double B_per_m, double E_star_Pa,
+                                           double normal_force_N) noexcept;
 //! Hertz contact for a prescribed approach delta >= 0 [m]; E* [Pa].
-[[nodiscard]] HertzContact hertz_from_approach(double A_per_m, double B_per_m, double E_star_Pa, double approach_m) noexcept;
+[[nodiscard]] HertzContact hertz_from_approach(double A_per_m, double B_per_m, double E_star_Pa,
+                                               double approach_m) noexcept;
 
 //! Strip half-length per unit peak pressure, a_i / p0_i = pi m^2 n / (2 E* (A + B)) [m/Pa] (paper Eqs. 25-26).
 //! Returns 0 for invalid curvatures.

@@ -67,12 +67,12 @@ class Mim1dSolver {
     const double* target_load_N;  // prescribed total load [N], or null
     double h_min;                 // deepest separation of the grid [m]
     double last_change = std::numeric_limits<double>::infinity();  // relative load change of the last step
-    bool set_checked = false;     // Eq. 4 checked since the active set last changed
-    std::size_t growth = 0;       // admission reach, in strips
-    int cycles = 0;               // times an active set came back to one already checked (cycle detection)
+    bool set_checked = false;                                      // Eq. 4 checked since the active set last changed
+    std::size_t growth = 0;                                        // admission reach, in strips
+    int cycles = 0;  // times an active set came back to one already checked (cycle detection)
     double best_merit = std::numeric_limits<double>::infinity();  // lowest residual on this set (stall detection)
     int steps_without_progress = 0;
-    double damping = 1.0;         // fraction of the Newton/fixed-point step taken (1: full steps)
+    double damping = 1.0;  // fraction of the Newton/fixed-point step taken (1: full steps)
   };
   enum class SetCheck { Iterate, Check, CheckAndFinish };
   enum class IterationOutcome { Continue, Converged, Failed };
@@ -118,21 +118,21 @@ class Mim1dSolver {
   StripGrid grid_;
   double E_star_Pa_;
   Mim1dOptions options_;
-  double b_;                        // strip half-width [m]
-  double kernel_scale_;             // 2 / (pi^2 E* b) [m/N]
-  std::vector<StripHertz> compliance_;  // local Hertz data per strip (all strips)
+  double b_;                                                               // strip half-width [m]
+  double kernel_scale_;                                                    // 2 / (pi^2 E* b) [m/N]
+  std::vector<StripHertz> compliance_;                                     // local Hertz data per strip (all strips)
   double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for
   std::vector<double> scratch_;
-  std::vector<double> load_;        // N_i [N] (all strips; 0 outside the active set)
-  std::vector<double> length_;      // a_i [m] (all strips)
-  std::vector<std::size_t> active_; // strips in contact, increasing
-  std::vector<std::size_t> violators_;  // strips that interpenetrate after deformation (scratch)
-  std::vector<double> penetrations_;    // their penetration [m] (scratch)
-  std::vector<double> basin_scratch_;   // deepest h of each strip's basin (initial guess)
+  std::vector<double> load_;                 // N_i [N] (all strips; 0 outside the active set)
+  std::vector<double> length_;               // a_i [m] (all strips)
+  std::vector<std::size_t> active_;          // strips in contact, increasing
+  std::vector<std::size_t> violators_;       // strips that interpenetrate after deformation (scratch)
+  std::vector<double> penetrations_;         // their penetration [m] (scratch)
+  std::vector<double> basin_scratch_;        // deepest h of each strip's basin (initial guess)
   std::vector<std::uint64_t> checked_sets_;  // signatures of the active sets checked for Eq. 4 in this solve
-  Eigen::MatrixXd influence_;       // G on the active set
-  Eigen::MatrixXd jacobian_;        // dR/dN on the active set
-  Eigen::VectorXd displacement_;    // u = G N on the active set
+  Eigen::MatrixXd influence_;                // G on the active set
+  Eigen::MatrixXd jacobian_;                 // dR/dN on the active set
+  Eigen::VectorXd displacement_;             // u = G N on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
   Eigen::VectorXd rhs_, active_loads_, ones_, residual_, next_loads_, slope_;  // the active system (scratch)
   std::vector<double> column_h_, column_q_;

@@ -14,9 +14,9 @@ enum class Mim1dUpdate : std::int8_t {
 };
 
 struct Mim1dOptions {
-  double strip_width_m = 0.2e-3;          //!< 2b [m]
+  double strip_width_m = 0.2e-3;  //!< 2b [m]
   Mim1dUpdate update = Mim1dUpdate::Newton;
-  CurvatureOptions curvature;             //!< lateral-curvature treatment in Eq. 26
+  CurvatureOptions curvature;  //!< lateral-curvature treatment in Eq. 26
   //! Relative convergence tolerance (loads, force) [-]. Chosen: a few hundred times double round-off, which
   //! Newton reaches in 7-40 iterations on the measured cases (ctab bench wheelrail, ctab paper-cases).
   double tolerance = 1.0e-11;

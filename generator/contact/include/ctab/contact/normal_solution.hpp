@@ -9,10 +9,10 @@ namespace ctab::gen {
 
 //! One strip of a patch (MIM-1D: paper Eq. 7, semi-elliptic pressure along x).
 struct StripSolution {
-  double y_m = 0.0;             //!< strip centre, lateral coordinate [m]
-  double half_length_m = 0.0;   //!< a_i, half-length along the rolling direction [m]
-  double p0_Pa = 0.0;           //!< p0_i, peak pressure of the strip [Pa]
-  double load_N = 0.0;          //!< N_i = pi a_i b p0_i, load carried by the strip [N] (paper Eq. A1)
+  double y_m = 0.0;            //!< strip centre, lateral coordinate [m]
+  double half_length_m = 0.0;  //!< a_i, half-length along the rolling direction [m]
+  double p0_Pa = 0.0;          //!< p0_i, peak pressure of the strip [Pa]
+  double load_N = 0.0;         //!< N_i = pi a_i b p0_i, load carried by the strip [N] (paper Eq. A1)
 };
 
 //! A contact patch: a maximal run of loaded strips.
@@ -28,13 +28,13 @@ struct PatchSolution {
 
 struct NormalSolution {
   SolveStatus status = SolveStatus::InvalidInput;
-  std::string method;                 //!< "mim1d", "hertz", ...
-  double approach_m = 0.0;            //!< rigid approach delta [m]
-  double normal_load_N = 0.0;         //!< total normal force [N]
-  int iterations = 0;                 //!< inner iterations (linear solves), all outer iterations together
-  int outer_iterations = 0;           //!< iterations on delta for a prescribed load (0 for a prescribed approach)
-  double residual = 0.0;              //!< final relative residual (displacement for delta, force for load) [-]
-  double solve_time_s = 0.0;          //!< wall-clock time of the solve [s]
+  std::string method;          //!< "mim1d", "hertz", ...
+  double approach_m = 0.0;     //!< rigid approach delta [m]
+  double normal_load_N = 0.0;  //!< total normal force [N]
+  int iterations = 0;          //!< inner iterations (linear solves), all outer iterations together
+  int outer_iterations = 0;    //!< iterations on delta for a prescribed load (0 for a prescribed approach)
+  double residual = 0.0;       //!< final relative residual (displacement for delta, force for load) [-]
+  double solve_time_s = 0.0;   //!< wall-clock time of the solve [s]
   std::vector<PatchSolution> patches;
 };
 

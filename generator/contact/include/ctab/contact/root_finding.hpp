@@ -6,9 +6,9 @@
 namespace ctab::gen {
 
 struct RootResult {
-  double x = 0.0;        //!< the root estimate
-  double residual = 0.0; //!< f(x)
-  int iterations = 0;    //!< evaluations of f after the bracket
+  double x = 0.0;         //!< the root estimate
+  double residual = 0.0;  //!< f(x)
+  int iterations = 0;     //!< evaluations of f after the bracket
   bool converged = false;
 };
 

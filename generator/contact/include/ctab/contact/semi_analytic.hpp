@@ -49,10 +49,12 @@ using GridSolver = std::function<NormalSolution(const StripGrid& grid, double ap
 //! Builds the strip grid and runs `solve` for a prescribed approach [m]; InvalidInput (no exception) for a gap
 //! that fails validate(), a bad strip width, E* or approach. Sets solve_time_s.
 [[nodiscard]] NormalSolution solve_on_strips_for_approach(const GapProfile& gap, double E_star_Pa, double strip_width_m,
-                                                          double approach_m, const char* method, const GridSolver& solve);
+                                                          double approach_m, const char* method,
+                                                          const GridSolver& solve);
 //! The same for a prescribed normal force [N] (solve_load_by_approach from hertz_start_approach).
 [[nodiscard]] NormalSolution solve_on_strips_for_load(const GapProfile& gap, double E_star_Pa, double strip_width_m,
-                                                      double normal_force_N, const char* method, const GridSolver& solve);
+                                                      double normal_force_N, const char* method,
+                                                      const GridSolver& solve);
 
 //! Approach beyond the deepest point that Hertz predicts for the force, with the curvatures of the deepest
 //! strip (B raised to A/20); a start value for solve_load_by_approach [m]. 0.1 mm if Hertz fails.

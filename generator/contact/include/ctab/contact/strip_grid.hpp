@@ -11,11 +11,11 @@
 namespace ctab::gen {
 
 struct StripGrid {
-  double strip_width_m = 0.0;        //!< 2b [m]
-  std::vector<double> y_m;           //!< strip centres [m] (n)
-  std::vector<double> h_m;           //!< separation at the centres [m] (n)
-  std::vector<double> A_per_m;       //!< rolling-direction relative curvature [1/m] (n)
-  std::vector<double> B_per_m;       //!< lateral relative curvature [1/m] (n)
+  double strip_width_m = 0.0;   //!< 2b [m]
+  std::vector<double> y_m;      //!< strip centres [m] (n)
+  std::vector<double> h_m;      //!< separation at the centres [m] (n)
+  std::vector<double> A_per_m;  //!< rolling-direction relative curvature [1/m] (n)
+  std::vector<double> B_per_m;  //!< lateral relative curvature [1/m] (n)
 
   [[nodiscard]] std::size_t size() const noexcept { return y_m.size(); }
   [[nodiscard]] double half_width_m() const noexcept { return 0.5 * strip_width_m; }

@@ -34,11 +34,11 @@ namespace ctab::gen {
 enum class ProfileRole { Wheel, Rail };
 
 struct ProfileReadOptions {
-  std::optional<bool> mirror_y;          //!< mirror y (on top of the file's setting); default per format/auto
-  std::optional<bool> mirror_z;          //!< mirror z; default auto-detect
-  double length_unit_m = 1e-3;           //!< unit of plain-text and MiniProf coordinates [m]
-  double smoothing_length_m = 1e-3;      //!< L of the smoothing spline [m]; 0 interpolates
-  double inclination = 1.0 / 40.0;       //!< rail inclination tan(angle) towards the track centre; 0: as given
+  std::optional<bool> mirror_y;      //!< mirror y (on top of the file's setting); default per format/auto
+  std::optional<bool> mirror_z;      //!< mirror z; default auto-detect
+  double length_unit_m = 1e-3;       //!< unit of plain-text and MiniProf coordinates [m]
+  double smoothing_length_m = 1e-3;  //!< L of the smoothing spline [m]; 0 interpolates
+  double inclination = 1.0 / 40.0;   //!< rail inclination tan(angle) towards the track centre; 0: as given
 };
 
 //! Points of a profile file in canonical orientation, increasing y, SI.
@@ -47,11 +47,13 @@ struct ProfilePoints {
   std::vector<std::size_t> line;  //!< source line of each point
 };
 
-[[nodiscard]] ProfilePoints read_profile_points(const std::string& path, ProfileRole role, const ProfileReadOptions& options);
+[[nodiscard]] ProfilePoints read_profile_points(const std::string& path, ProfileRole role,
+                                                const ProfileReadOptions& options);
 
 //! Parses a rail inclination: a ratio such as "1/40" or a number in [0, 0.2). Throws InputError naming
 //! `source`, `line` and `what` (the option or key) otherwise.
-[[nodiscard]] double parse_inclination(const std::string& text, const std::string& source, std::size_t line, const std::string& what);
+[[nodiscard]] double parse_inclination(const std::string& text, const std::string& source, std::size_t line,
+                                       const std::string& what);
 
 //! A profile table from a built-in name (wheel: "S1002"; rail: "UIC60" or "60E1") or a file path.
 [[nodiscard]] ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options);

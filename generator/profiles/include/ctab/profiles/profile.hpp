@@ -45,9 +45,9 @@ class TransformedCurve final : public ProfileCurve {
 
 //! Value, slope and second derivative of a profile at one lateral position.
 struct ProfilePoint {
-  double z = 0.0;    //!< [m]
-  double dz = 0.0;   //!< dz/dy [-]
-  double d2z = 0.0;  //!< d2z/dy2 [1/m]
+  double z = 0.0;                          //!< [m]
+  double dz = 0.0;                         //!< dz/dy [-]
+  double d2z = 0.0;                        //!< d2z/dy2 [1/m]
   [[nodiscard]] double curvature() const;  //!< signed curvature d2z/(1+dz^2)^(3/2) [1/m]; > 0 concave seen from -z
 };
 

@@ -41,8 +41,8 @@ inline double polyline_z(const std::vector<double>& y, const std::vector<double>
 }
 
 //! y where the polyline first reaches depth `level` walking from index `from` by `step` (+1 or -1).
-inline std::optional<double> face_at_depth(const std::vector<double>& y, const std::vector<double>& z,
-                                           std::size_t from, int step, double level) {
+inline std::optional<double> face_at_depth(const std::vector<double>& y, const std::vector<double>& z, std::size_t from,
+                                           int step, double level) {
   for (std::size_t i = from; step > 0 ? i + 1 < y.size() : i > 0; i = step > 0 ? i + 1 : i - 1) {
     const std::size_t next = step > 0 ? i + 1 : i - 1;
     if (z[next] >= level) return y[i] + (level - z[i]) / (z[next] - z[i]) * (y[next] - y[i]);
@@ -69,13 +69,14 @@ inline double band_slope(const std::vector<double>& y, const std::vector<double>
 
 }  // namespace detail
 
-inline constexpr double kCantFaceDepth_m = 14e-3;     //!< depth of the head's faces (gauge measuring depth)
-inline constexpr double kCantMinFaceDepth_m = 5e-3;   //!< shallower profiles are not measured
-inline constexpr double kCantBandHalfWidth_m = 10e-3; //!< half width of the fitted running band
+inline constexpr double kCantFaceDepth_m = 14e-3;      //!< depth of the head's faces (gauge measuring depth)
+inline constexpr double kCantMinFaceDepth_m = 5e-3;    //!< shallower profiles are not measured
+inline constexpr double kCantBandHalfWidth_m = 10e-3;  //!< half width of the fitted running band
 
 //! The head's cant from profile points (y increasing, z down, SI); nullopt when the profile does not reach
 //! 5 mm below its top on both sides or the band does not fit inside it.
-[[nodiscard]] inline std::optional<HeadCant> measure_head_cant(const std::vector<double>& y_m, const std::vector<double>& z_m) {
+[[nodiscard]] inline std::optional<HeadCant> measure_head_cant(const std::vector<double>& y_m,
+                                                               const std::vector<double>& z_m) {
   if (y_m.size() < 3 || y_m.size() != z_m.size()) return std::nullopt;
   const auto top = static_cast<std::size_t>(std::min_element(z_m.begin(), z_m.end()) - z_m.begin());
   const double top_z = z_m[top];

@@ -28,8 +28,8 @@ struct ProfilePair {
 };
 
 struct BatchManifest {
-  std::string source;            //!< the manifest path (messages)
-  TableConfig base;              //!< the base config (profiles replaced per pair)
+  std::string source;  //!< the manifest path (messages)
+  TableConfig base;    //!< the base config (profiles replaced per pair)
   std::vector<ProfilePair> pairs;
 };
 

@@ -24,8 +24,8 @@ inline constexpr std::size_t kRowsPerUnit = 8;
 
 //! The rows of shard `index` of `count` (1 <= index <= count): the units [floor((index-1) U / count),
 //! floor(index U / count)) of U units, sorted. A shard may be empty when count > U.
-[[nodiscard]] std::vector<std::size_t> shard_rows(const std::vector<std::vector<std::size_t>>& units,
-                                                  std::size_t index, std::size_t count);
+[[nodiscard]] std::vector<std::size_t> shard_rows(const std::vector<std::vector<std::size_t>>& units, std::size_t index,
+                                                  std::size_t count);
 
 //! Rows as ranges, "0-7,233-240" (sorted input; "" for none).
 [[nodiscard]] std::string format_rows(const std::vector<std::size_t>& rows);

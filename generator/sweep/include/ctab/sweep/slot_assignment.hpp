@@ -29,8 +29,8 @@ struct SlotPatch {
 
 //! One wheel of one case.
 struct SlotCase {
-  bool success = false;             //!< the case succeeded (status >= 0); a failed case holds no patch
-  std::vector<SlotPatch> patches;   //!< in the solver's order
+  bool success = false;            //!< the case succeeded (status >= 0); a failed case holds no patch
+  std::vector<SlotPatch> patches;  //!< in the solver's order
 };
 
 //! Slots of one case's patches: slot_of[i] for patch i (all empty when the case failed or overflowed).
@@ -45,7 +45,8 @@ struct SlotAssignment {
 inline constexpr double kZoneChangeMatch_m = 1e-3;
 
 //! Slots for a series of cases in increasing dy (see the file comment).
-[[nodiscard]] std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& series, std::size_t n_slots);
+[[nodiscard]] std::vector<SlotAssignment> assign_slots_along_dy(const std::vector<SlotCase>& series,
+                                                                std::size_t n_slots);
 
 //! The same on a whole table whose cases were stored one by one (each in the zone rule): for every (second-axis
 //! value, wheel) series, the patches of each case, taken in order of rail position (so that the result depends

@@ -33,24 +33,24 @@ inline constexpr std::size_t kMaxTableCases = 2'000'000;
 inline constexpr double kMaxTableBytes = 8.0 * 1024.0 * 1024.0 * 1024.0;
 
 struct TableConfig {
-  std::string source = "default";          //!< file name, for messages and provenance
-  std::string text;                        //!< the full config text (provenance)
-  std::string wheel = "S1002";             //!< built-in name or profile file
+  std::string source = "default";  //!< file name, for messages and provenance
+  std::string text;                //!< the full config text (provenance)
+  std::string wheel = "S1002";     //!< built-in name or profile file
   std::string rail = "UIC60";
   std::string inclination_text = "1/40";
-  double inclination = 1.0 / 40.0;         //!< rail inclination tan(angle); 0: the rail file is already inclined
-  double smoothing_length_m = 1e-3;        //!< smoothing of point profiles [m]
+  double inclination = 1.0 / 40.0;   //!< rail inclination tan(angle); 0: the rail file is already inclined
+  double smoothing_length_m = 1e-3;  //!< smoothing of point profiles [m]
   TrackSetup track;
-  ElasticMaterial material = kSteel;       //!< both bodies
+  ElasticMaterial material = kSteel;  //!< both bodies
   ContactMode mode = ContactMode::Wheelset;
   NormalMethod method = NormalMethod::Mim1d;
   double strip_width_m = 0.2e-3;
   std::vector<double> lateral_displacement_m;  //!< uniform axis [m]
   LoadKind load_kind = LoadKind::VerticalForce;
-  std::vector<double> load_values;         //!< second axis, or one fixed value [N or m]
-  bool second_axis = false;                //!< true when the load or approach is an axis of the table
-  std::size_t strip_samples = 32;          //!< points of the resampled strip profiles per patch
-  std::size_t patch_slots = 3;             //!< patch slots per wheel and case in the table ([output], 1..16)
+  std::vector<double> load_values;  //!< second axis, or one fixed value [N or m]
+  bool second_axis = false;         //!< true when the load or approach is an axis of the table
+  std::size_t strip_samples = 32;   //!< points of the resampled strip profiles per patch
+  std::size_t patch_slots = 3;      //!< patch slots per wheel and case in the table ([output], 1..16)
   std::size_t key_line(const std::string& key) const;  //!< source line of a key (0 if unknown)
   std::vector<std::pair<std::string, std::size_t>> key_lines;
 };
@@ -65,7 +65,8 @@ struct TableConfig {
 
 //! Places the profiles on the config's track (SideGeometry); an error (e.g. a rail that does not reach the gauge
 //! height) names the config file and the line of track.gauge_height_m (or of profiles.rail). Throws InputError.
-[[nodiscard]] SideGeometry place_profiles(const TableConfig& config, const ProfileTable& wheel, const ProfileTable& rail);
+[[nodiscard]] SideGeometry place_profiles(const TableConfig& config, const ProfileTable& wheel,
+                                          const ProfileTable& rail);
 
 //! Name of the second axis in the table ("vertical_load_N", "normal_load_N" or "approach_m").
 [[nodiscard]] const char* load_axis_name(LoadKind kind) noexcept;

@@ -32,7 +32,7 @@ struct GeneratorInfo {
   std::string git_commit = "unknown";
   std::string compiler = "unknown";     //!< compiler id and version (CTAB_COMPILER)
   std::string build_flags = "unknown";  //!< build type and flags (CTAB_BUILD_FLAGS)
-  int threads = 1;                  //!< OpenMP threads for the sweep
+  int threads = 1;                      //!< OpenMP threads for the sweep
 };
 
 //! Everything a table case needs, built once from a config (serial; may throw InputError). Movable: the
@@ -92,11 +92,11 @@ inline constexpr WheelSelection kBothWheels{true, true};
 //! the file is the right wheel at -dy).
 struct CaseSolution {
   double dy_m = 0.0;
-  double load_value = 0.0;                   //!< in the unit of the second axis [N or m]
+  double load_value = 0.0;  //!< in the unit of the second axis [N or m]
   CaseRoll roll;
-  WheelSelection solved = kBothWheels;       //!< the wheels solved; the others are empty
-  std::array<CaseWheel, tables::kWheels> wheels;   //!< 0 right, 1 left (each in its own side frame)
-  double rolling_radius_difference_m = 0.0;  //!< r_right - r_left at the rigid contact points [m]; 0 unless both
+  WheelSelection solved = kBothWheels;            //!< the wheels solved; the others are empty
+  std::array<CaseWheel, tables::kWheels> wheels;  //!< 0 right, 1 left (each in its own side frame)
+  double rolling_radius_difference_m = 0.0;       //!< r_right - r_left at the rigid contact points [m]; 0 unless both
 };
 [[nodiscard]] CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value,
                                             WheelSelection wheels = kBothWheels);
@@ -133,7 +133,7 @@ class TableSweep {
   TableSweep& operator=(TableSweep&&) = delete;
 
   [[nodiscard]] std::size_t n_dy() const noexcept;
-  [[nodiscard]] bool mirrored() const noexcept;  //!< only the right wheel is solved
+  [[nodiscard]] bool mirrored() const noexcept;                             //!< only the right wheel is solved
   [[nodiscard]] std::size_t wheel_solves(std::size_t rows) const noexcept;  //!< wheel solves of `rows` rows
   //! A table of the config's shape: axes set, every case zero with status Converged, no jumps, no provenance.
   [[nodiscard]] tables::Table empty_table() const;

@@ -28,10 +28,10 @@ enum class AxisProblem : std::int8_t {
 };
 
 struct UniformAxis {
-  std::vector<double> values;             //!< the axis (empty unless problem == None)
+  std::vector<double> values;  //!< the axis (empty unless problem == None)
   AxisProblem problem = AxisProblem::None;
-  std::string part;                       //!< "start", "stop", "step" or "" (the whole range) at fault
-  std::string message;                    //!< what was expected, e.g. "must be positive"
+  std::string part;     //!< "start", "stop", "step" or "" (the whole range) at fault
+  std::string message;  //!< what was expected, e.g. "must be positive"
   [[nodiscard]] bool ok() const noexcept { return problem == AxisProblem::None; }
 };
 

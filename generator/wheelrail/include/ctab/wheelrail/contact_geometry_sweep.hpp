@@ -19,14 +19,15 @@ enum class ContactMode { SingleWheel, Wheelset };
 struct RigidContactRow {
   double dy_m = 0.0;
   double roll_rad = 0.0;
-  GapMinimum right, left;            //!< first contact of each wheel (left in its own mirrored frame)
+  GapMinimum right, left;                    //!< first contact of each wheel (left in its own mirrored frame)
   double rolling_radius_difference_m = 0.0;  //!< r_right - r_left [m]
-  bool converged = true;             //!< false when the roll iteration failed or a wheel is off its rail
-  std::string detail;                //!< empty when converged; otherwise why not, in words
+  bool converged = true;                     //!< false when the roll iteration failed or a wheel is off its rail
+  std::string detail;                        //!< empty when converged; otherwise why not, in words
 };
 
 //! Rigid contact at one shift; in single-wheel mode roll = 0 and each wheel is lowered on its own.
-[[nodiscard]] RigidContactRow rigid_contact(const SideGeometry& right, const SideGeometry& left, double dy_m, ContactMode mode);
+[[nodiscard]] RigidContactRow rigid_contact(const SideGeometry& right, const SideGeometry& left, double dy_m,
+                                            ContactMode mode);
 
 //! A discontinuity of the contact position between two neighbouring shifts.
 struct ContactJump {
@@ -40,6 +41,7 @@ struct ContactJump {
 
 //! EN 15302 equivalent conicity at amplitude y_hat [m] from dr(y) sampled on a uniform grid y >= 0
 //! (dy_m[0] = 0). Returns NaN if the grid does not reach y_hat or dr does not restore.
-[[nodiscard]] double equivalent_conicity(const std::vector<double>& dy_m, const std::vector<double>& delta_r_m, double amplitude_m);
+[[nodiscard]] double equivalent_conicity(const std::vector<double>& dy_m, const std::vector<double>& delta_r_m,
+                                         double amplitude_m);
 
 }  // namespace ctab::gen

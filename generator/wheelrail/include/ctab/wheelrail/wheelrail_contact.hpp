@@ -27,14 +27,14 @@
 namespace ctab::gen {
 
 struct PatchStrip {
-  double s_m = 0.0;             //!< lateral coordinate in the contact plane [m]
-  double y_rail_m = 0.0;        //!< the same point on the rail profile [m]
-  double half_length_m = 0.0;   //!< a_i [m]
-  double p0_Pa = 0.0;           //!< p0_i [Pa]
+  double s_m = 0.0;            //!< lateral coordinate in the contact plane [m]
+  double y_rail_m = 0.0;       //!< the same point on the rail profile [m]
+  double half_length_m = 0.0;  //!< a_i [m]
+  double p0_Pa = 0.0;          //!< p0_i [Pa]
 };
 
 struct ContactPatch {
-  std::string zone;                   //!< "tread" (S > -26 mm, S1002 section B and beyond) or "flange"
+  std::string zone;  //!< "tread" (S > -26 mm, S1002 section B and beyond) or "flange"
   double normal_force_N = 0.0;
   //! Force of the wheel on the rail in the side frame, summed over the strips along each strip's normal (today
   //! every strip of a patch has the contact-plane normal): lateral + towards the field side, vertical + down [N].
@@ -43,27 +43,27 @@ struct ContactPatch {
   double force_vertical_N = 0.0;
   double area_m2 = 0.0;
   double max_pressure_Pa = 0.0;
-  double approach_m = 0.0;            //!< normal approach of the patch [m]
-  double plane_angle_rad = 0.0;       //!< inclination of the contact plane (rail slope at the reference point) [rad]
-  double contact_angle_rad = 0.0;     //!< direction of the resultant normal force (load-weighted rail inclination) [rad]
-  double y_rail_m = 0.0;              //!< contact reference point (deepest rigid point) on the rail [m]
-  double y_wheel_m = 0.0;             //!< the same on the wheel, origin at the tape circle [m]
-  double rolling_radius_m = 0.0;      //!< rolling radius at the reference point [m]
-  double y_cop_rail_m = 0.0;          //!< centre of pressure on the rail [m]
+  double approach_m = 0.0;         //!< normal approach of the patch [m]
+  double plane_angle_rad = 0.0;    //!< inclination of the contact plane (rail slope at the reference point) [rad]
+  double contact_angle_rad = 0.0;  //!< direction of the resultant normal force (load-weighted rail inclination) [rad]
+  double y_rail_m = 0.0;           //!< contact reference point (deepest rigid point) on the rail [m]
+  double y_wheel_m = 0.0;          //!< the same on the wheel, origin at the tape circle [m]
+  double rolling_radius_m = 0.0;   //!< rolling radius at the reference point [m]
+  double y_cop_rail_m = 0.0;       //!< centre of pressure on the rail [m]
   double s_min_m = 0.0, s_max_m = 0.0;  //!< lateral extent of the loaded strips in the plane [m]
   std::vector<PatchStrip> strips;
 };
 
 struct WheelContact {
   SolveStatus status = SolveStatus::InvalidInput;
-  double dy_m = 0.0;                  //!< lateral shift of the wheelset [m]
-  double roll_rad = 0.0;              //!< roll angle [rad]
-  double vertical_approach_m = 0.0;   //!< wheel lowered beyond first contact [m]
-  double first_contact_z_m = 0.0;     //!< z_ws of first contact, relative to the nominal r_nom [m]
-  GapMinimum rigid_contact;           //!< the rigid first-contact point (rolling radius for dr)
-  double normal_force_N = 0.0;        //!< sum over patches
-  double vertical_force_N = 0.0;      //!< sum of the patches' force_vertical_N
-  int iterations = 0;                 //!< MIM-1D iterations, all patches and root-finding steps
+  double dy_m = 0.0;                 //!< lateral shift of the wheelset [m]
+  double roll_rad = 0.0;             //!< roll angle [rad]
+  double vertical_approach_m = 0.0;  //!< wheel lowered beyond first contact [m]
+  double first_contact_z_m = 0.0;    //!< z_ws of first contact, relative to the nominal r_nom [m]
+  GapMinimum rigid_contact;          //!< the rigid first-contact point (rolling radius for dr)
+  double normal_force_N = 0.0;       //!< sum over patches
+  double vertical_force_N = 0.0;     //!< sum of the patches' force_vertical_N
+  int iterations = 0;                //!< MIM-1D iterations, all patches and root-finding steps
   double solve_time_s = 0.0;
   std::vector<ContactPatch> patches;
   std::vector<GapMinimum> near_misses;  //!< minima not in contact, with their vertical gap

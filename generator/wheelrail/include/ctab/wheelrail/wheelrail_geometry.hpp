@@ -19,11 +19,11 @@ namespace ctab::gen {
 
 //! Track and wheelset parameters (Manchester benchmark defaults).
 struct TrackSetup {
-  double gauge_m = 1.435;                    //!< track gauge [m]
-  double gauge_height_m = 0.014;             //!< gauge measured this far below the top of the rails [m]
-  double flange_back_distance_m = 1.360;     //!< inner faces of the wheels [m]
-  double flange_back_position_m = -0.070;    //!< S of the flange back in the wheel profile [m]
-  double nominal_radius_m = 0.460;           //!< rolling radius at S = 0 [m]
+  double gauge_m = 1.435;                  //!< track gauge [m]
+  double gauge_height_m = 0.014;           //!< gauge measured this far below the top of the rails [m]
+  double flange_back_distance_m = 1.360;   //!< inner faces of the wheels [m]
+  double flange_back_position_m = -0.070;  //!< S of the flange back in the wheel profile [m]
+  double nominal_radius_m = 0.460;         //!< rolling radius at S = 0 [m]
 };
 
 //! One local minimum of the vertical gap: a contact point or a near miss.
@@ -37,11 +37,11 @@ struct GapMinimum {
 
 //! The wheel surface point at S in the side frame with z_ws = 0, and its rail coordinate.
 struct WheelSurfacePoint {
-  double rail_y_m = 0.0;    //!< lateral position in rail coordinates [m]
-  double z_m = 0.0;         //!< height (down) in the track frame, z_ws = 0 [m]
-  double slope = 0.0;       //!< dz/dy of the wheel surface in the track frame [-]
-  double curvature = 0.0;   //!< signed curvature of the wheel surface (as ProfilePoint::curvature) [1/m]
-  double radius_m = 0.0;    //!< r_nom + F(S) [m]
+  double rail_y_m = 0.0;   //!< lateral position in rail coordinates [m]
+  double z_m = 0.0;        //!< height (down) in the track frame, z_ws = 0 [m]
+  double slope = 0.0;      //!< dz/dy of the wheel surface in the track frame [-]
+  double curvature = 0.0;  //!< signed curvature of the wheel surface (as ProfilePoint::curvature) [1/m]
+  double radius_m = 0.0;   //!< r_nom + F(S) [m]
 };
 
 class SideGeometry {
@@ -85,12 +85,12 @@ class SideGeometry {
 
 //! Rigid wheelset state for one lateral shift.
 struct WheelsetPose {
-  double dy_m = 0.0;        //!< lateral shift [m]
-  double roll_rad = 0.0;    //!< roll angle [rad] (0 in single-wheel mode)
-  double z_right_m = 0.0;   //!< z_ws at first contact of the right wheel [m]
-  double z_left_m = 0.0;    //!< the same for the left wheel [m]
+  double dy_m = 0.0;       //!< lateral shift [m]
+  double roll_rad = 0.0;   //!< roll angle [rad] (0 in single-wheel mode)
+  double z_right_m = 0.0;  //!< z_ws at first contact of the right wheel [m]
+  double z_left_m = 0.0;   //!< the same for the left wheel [m]
   bool converged = true;
-  std::string detail;       //!< empty when converged; otherwise why not, in words (names dy)
+  std::string detail;  //!< empty when converged; otherwise why not, in words (names dy)
 };
 
 //! Roll angle at which both wheels touch at the same z_ws (rigid wheelset), by a safeguarded root finder.

@@ -23,8 +23,8 @@ using NormalMethod = ContactMethod;
 
 struct WheelRailOptions {
   NormalMethod method = NormalMethod::Mim1d;
-  Mim1dOptions mim1d;                 //!< strip width, curvature treatment, tolerances
-  double sample_step_m = 0.1e-3;      //!< sampling of h(s) in the contact plane [m]
+  Mim1dOptions mim1d;             //!< strip width, curvature treatment, tolerances
+  double sample_step_m = 0.1e-3;  //!< sampling of h(s) in the contact plane [m]
 };
 
 }  // namespace ctab::gen
