@@ -13,9 +13,13 @@
 #include "ctab/lookup/open.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/sweep/table_generator.hpp"
+#include "synthetic_table.hpp"
 
 namespace ctab::lookup {
 namespace {
+
+using test::identical;
+using test::parse_c_header;
 
 std::vector<ctab_result> answers(const Table& table) {
   std::vector<ctab_result> out;
@@ -29,21 +33,6 @@ std::vector<ctab_result> answers(const Table& table) {
       out.push_back(r);
     }
   return out;
-}
-
-bool identical(const std::vector<ctab_result>& a, const std::vector<ctab_result>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(ctab_result)) == 0;
-}
-
-std::vector<unsigned char> parse_c_header(const std::string& text) {
-  std::vector<unsigned char> bytes;
-  const std::size_t open = text.find("] = {"), close = text.find("};");
-  std::istringstream in(text.substr(open + 5, close - open - 5));
-  std::string token;
-  while (std::getline(in, token, ','))
-    if (token.find("0x") != std::string::npos)
-      bytes.push_back(static_cast<unsigned char>(std::stoul(token, nullptr, 16)));
-  return bytes;
 }
 
 TEST(LookupHdf5, Hdf5BlobAndCHeaderPathsGiveBitIdenticalAnswers) {

@@ -2,6 +2,8 @@
 #include "synthetic_table.hpp"
 
 #include <cmath>
+#include <cstring>
+#include <sstream>
 
 namespace ctab::lookup::test {
 
@@ -59,6 +61,21 @@ TableData make_synthetic(const SyntheticOptions& o) {
     }
   }
   return data;
+}
+
+bool identical(const std::vector<ctab_result>& a, const std::vector<ctab_result>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(ctab_result)) == 0;
+}
+
+std::vector<unsigned char> parse_c_header(const std::string& text) {
+  std::vector<unsigned char> bytes;
+  const std::size_t open = text.find("] = {"), close = text.find("};");
+  std::istringstream in(text.substr(open + 5, close - open - 5));
+  std::string token;
+  while (std::getline(in, token, ','))
+    if (token.find("0x") != std::string::npos)
+      bytes.push_back(static_cast<unsigned char>(std::stoul(token, nullptr, 16)));
+  return bytes;
 }
 
 }  // namespace ctab::lookup::test

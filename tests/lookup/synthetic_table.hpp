@@ -3,7 +3,10 @@
 // second axis (so linear interpolation is exact inside interpolable cells), a flange slot that appears in one
 // cell (with its jump), a spare slot whose contact point moves (a Moves jump), and optionally a failed case.
 #include <cstddef>
+#include <string>
+#include <vector>
 
+#include "ctab/lookup/ctab_lookup.h"
 #include "ctab/lookup/table_data.hpp"
 
 namespace ctab::lookup::test {
@@ -22,5 +25,10 @@ struct SyntheticOptions {
 double synthetic_value(std::size_t q, std::size_t s, std::size_t w, double dy_m, double second);
 
 TableData make_synthetic(const SyntheticOptions& options = {});
+
+//! True when two answer lists are byte-identical.
+bool identical(const std::vector<ctab_result>& a, const std::vector<ctab_result>& b);
+//! The bytes of a C header written by blob_c_header (`ctab export --format c-header`), parsed back.
+std::vector<unsigned char> parse_c_header(const std::string& text);
 
 }  // namespace ctab::lookup::test
