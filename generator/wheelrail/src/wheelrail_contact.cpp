@@ -381,6 +381,7 @@ class WheelCase {
   // patch is re-solved in the plane at that centre until the reference point moves by less than
   // kRecentreTolerance_m (at most kRecentrePasses passes).
   SolveStatus recentre_main_patch(double depth) {
+    if (!options_.reference_at_interpenetration_centre) return SolveStatus::Converged;
     for (int pass = 0; pass < kRecentrePasses; ++pass) {
       GapMinimum centre = ws_.minima[0];
       if (!interpenetration_centre(centre)) return SolveStatus::Converged;
