@@ -218,13 +218,14 @@ TEST_F(FlangeReference, DefaultKeepsTheDeepestPoint) {
   EXPECT_NEAR(c.patches.front().plane_angle_rad * kDegPerRad, -69.99, 0.01);
 }
 
-// The reference point itself against CONTACT's at the flange root and flank (a single minimum there).
+// The reference point itself against CONTACT's at the flange root and flank (a single minimum there): measured
+// -0.003, -0.013, -0.005, -0.010 mm (with weights pen^(3/2) instead of pen^(5/2): -0.12, +0.008, -0.12, 0.000 mm).
 TEST_F(FlangeReference, ReferencePointMatchesContact) {
   CTAB_REQUIRE_SHARED();
   for (const char* loading : {"vertical_load", "normal_force"}) {
     for (double dy : {6.5, 7.5}) {
       const Errors e = measure(Case{loading, dy, dy < 7 ? "p6p50" : "p7p50", {}});
-      EXPECT_LT(std::abs(e.rail_point_mm), 0.15) << loading << " dy " << dy << " mm";
+      EXPECT_LT(std::abs(e.rail_point_mm), 0.02) << loading << " dy " << dy << " mm";
     }
   }
 }
@@ -232,11 +233,11 @@ TEST_F(FlangeReference, ReferencePointMatchesContact) {
 // Guards: {area, pmax, cop_mm, angle_deg, lateral, p0_rms}; 0 = the target holds.
 INSTANTIATE_TEST_SUITE_P(Planar, FlangeReference,
                          ::testing::Values(Case{"vertical_load", 5.5, "p5p50", {0.08, 0, 0.40, 1.6, 0.030, 0}},
-                                           Case{"vertical_load", 6.5, "p6p50", {0.19, 0.12, 0.60, 0, 0, 0.11}},
-                                           Case{"vertical_load", 7.5, "p7p50", {0.07, 0, 0, 0.55, 0.072, 0.15}},
+                                           Case{"vertical_load", 6.5, "p6p50", {0.19, 0.12, 0.60, 0.45, 0, 0.115}},
+                                           Case{"vertical_load", 7.5, "p7p50", {0.065, 0, 0, 0, 0.037, 0.115}},
                                            Case{"normal_force", 5.5, "p5p50", {0.10, 0, 0.41, 1.45, 0.025, 0}},
-                                           Case{"normal_force", 6.5, "p6p50", {0.17, 0.11, 0.54, 0, 0, 0.115}},
-                                           Case{"normal_force", 7.5, "p7p50", {0.08, 0, 0, 0, 0, 0.135}}),
+                                           Case{"normal_force", 6.5, "p6p50", {0.17, 0.11, 0.54, 0.40, 0, 0.115}},
+                                           Case{"normal_force", 7.5, "p7p50", {0.095, 0, 0, 0, 0, 0.18}}),
                          [](const ::testing::TestParamInfo<Case>& param) {
                            return std::string(param.param.loading) + "_" + param.param.tag;
                          });

@@ -375,10 +375,12 @@ class WheelCase {
   }
 
   // CONTACT's contact reference point (m_wr_locatecp step 5): the centre of the interpenetration region at the
-  // current vertical approach, weighted by the interpenetration integrated along x (~ pen^(3/2) for gap(x) = -pen +
-  // A x^2), not the deepest rigid point. On a straight flank, where rail and wheel are nearly parallel, the deepest
-  // point is ill-defined (it sits where the rail's curvature ends) while the centre follows the patch. The main
-  // patch is re-solved in the plane at that centre until the reference point moves by less than
+  // current vertical approach, weighted by the squared gap integrated along x (~ pen^(5/2) for gap(x) = -pen +
+  // A x^2), not the deepest rigid point. Against CONTACT's planar reference points at dy 6.5 and 7.5 mm this
+  // weight agrees within 0.013 mm, the weight integral(-gap) dx ~ pen^(3/2) only within 0.12 mm. On the flank a
+  // rail arc (13 mm) meets the straight 70 deg wheel flank: the deepest point is where the rail slope is -70 deg for
+  // every dy, while the interpenetration region, measured vertically, is lopsided and its centre moves with the
+  // approach. The main patch is re-solved in the plane at that centre until the reference point moves by less than
   // kRecentreTolerance_m (at most kRecentrePasses passes).
   SolveStatus recentre_main_patch(double depth) {
     if (!options_.reference_at_interpenetration_centre) return SolveStatus::Converged;
@@ -408,7 +410,7 @@ class WheelCase {
         if (!(penetration > 0.0)) break;
         s_low = std::min(s_low, s);
         s_high = std::max(s_high, s);
-        const double weight = penetration * std::sqrt(penetration);
+        const double weight = penetration * penetration * std::sqrt(penetration);  // integral of gap^2 along x
         weight_sum += weight;
         moment += weight * s;
         ++samples;
