@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -48,9 +50,16 @@ void send_assignment(int worker, std::int64_t unit) {
   MPI_Send(&unit, 1, MPI_INT64_T, worker, kTagAssign, MPI_COMM_WORLD);
 }
 
+// The failure path under test: a worker whose rank is CTAB_MPI_TEST_FAIL_RANK throws in every unit it solves.
+bool injected_failure(int rank) {
+  const char* text = std::getenv("CTAB_MPI_TEST_FAIL_RANK");
+  return text != nullptr && std::atoi(text) == rank;
+}
+
 // A worker: solve assigned units into a scratch table and send their rows back until told to stop.
-void run_worker(const gen::TableSweep& sweep, const std::vector<std::vector<std::size_t>>& units) {
+void run_worker(const gen::TableSweep& sweep, const std::vector<std::vector<std::size_t>>& units, int rank) {
   tables::Table scratch = sweep.empty_table();
+  const bool fail = injected_failure(rank);
   for (;;) {
     std::int64_t unit = kStop;
     MPI_Recv(&unit, 1, MPI_INT64_T, kRoot, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
@@ -59,6 +68,7 @@ void run_worker(const gen::TableSweep& sweep, const std::vector<std::vector<std:
     std::vector<unsigned char> message(sizeof(ResultHeader));
     ResultHeader header{unit, 0};
     try {
+      if (fail) throw std::runtime_error("CTAB_MPI_TEST_FAIL_RANK");
       sweep.solve_rows(rows, scratch);
       const std::vector<unsigned char> packed = gen::pack_rows(scratch, rows);
       message.insert(message.end(), packed.begin(), packed.end());
@@ -177,7 +187,7 @@ std::optional<tables::Table> generate_table_mpi(const MpiSession& session, const
   }
   const auto units = gen::sweep_units(sweep->n_dy(), sweep->mirrored());
   if (session.rank() != kRoot) {
-    run_worker(*sweep, units);
+    run_worker(*sweep, units, session.rank());
     return std::nullopt;
   }
   tables::Table table = Root(*sweep, units, session.size() - 1, progress).run();

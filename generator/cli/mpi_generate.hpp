@@ -10,6 +10,7 @@
 //! set-up error on any rank (a profile missing on one machine, a bad output path on rank 0) stops every rank.
 //! Waits never spin: rank 0 polls (MPI_Iprobe) and sleeps briefly; workers block only for their next assignment,
 //! which rank 0 always sends (a unit or stop). A rank that dies ends the job through mpirun.
+//! For the tests only: the environment variable CTAB_MPI_TEST_FAIL_RANK=K makes worker rank K throw in each unit.
 #include <functional>
 #include <optional>
 
