@@ -146,7 +146,9 @@ int run_generate(const GenerateOptions& o) {
 Command add_generate_command(CLI::App& parent) {
   auto o = std::make_shared<GenerateOptions>();
   CLI::App* app =
-      parent.add_subcommand("generate", "Generate a contact table (HDF5) from a TOML config or the embedded default");
+      parent.add_subcommand("generate",
+                            "Generate a contact table (HDF5) from a TOML config or the embedded default; "
+                            "`mpirun -n R ctab generate` shares the cases among R ranks (a build with CTAB_WITH_MPI)");
   app->add_option("config", o->config_path,
                   "TOML config (default: `ctab config --print-default`: S1002 on UIC60 1:40, "
                   "wheelset, -12..12 mm, 78.5 kN)");
