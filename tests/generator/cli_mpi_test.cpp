@@ -28,8 +28,8 @@ const char* const kConfig =
 
 // Runs a shell command line under `timeout` (a hang fails the test instead of stopping the suite); the exit code.
 int run_shell(const std::string& environment, const std::string& command, const std::string& log) {
-  const std::string line = "env SOURCE_DATE_EPOCH=1700000000 " + environment + " timeout 120 " + command + " >" +
-                           log + ".out 2>" + log + ".err";
+  const std::string line = "env SOURCE_DATE_EPOCH=1700000000 " + environment + " timeout 120 " + command + " >" + log +
+                           ".out 2>" + log + ".err";
   const int status = std::system(line.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
