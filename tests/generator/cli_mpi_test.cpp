@@ -1,5 +1,5 @@
-// `mpirun -n 2 ctab generate` (built with CTAB_WITH_MPI) against a single-process run, byte for byte; a worker
-// that fails reports its units as failed cases; a set-up error on rank 0 stops every rank (no hang).
+// `mpirun -n 2 ctab generate` and `ctab batch` (built with CTAB_WITH_MPI) against a single-process run, byte for
+// byte; a worker that fails reports its units as failed cases; a set-up error on rank 0 stops every rank (no hang).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli_run.hpp"
+#include "test_support.hpp"
 #include "ctab/tables/table.hpp"
 
 namespace {
@@ -82,4 +83,32 @@ TEST(CliMpi, ASetUpErrorOnRankZeroStopsEveryRank) {
   EXPECT_NE(code, 0);
   EXPECT_NE(code, 124) << "timed out";  // `timeout` ends a hung job with 124
   EXPECT_NE(read_text(dir + "s.err").find("occupied.h5"), std::string::npos) << read_text(dir + "s.err");
+}
+
+TEST(CliMpi, ThreePairBatchOnTwoRanksWritesTheSingleProcessTables) {
+  CTAB_REQUIRE_SHARED();
+  const std::string dir = fresh_directory("batch");
+  fs::create_directories(dir + "wheels");
+  fs::copy_file(std::string(CTAB_SHARED_DIR) + "/profiles/MBench_S1002_v3.prw", dir + "wheels/w1.prw");
+  std::ofstream(dir + "wheels/bad.prw") << "not a profile\n";
+  std::ofstream(dir + "small.toml") << "[solver]\nmode = \"wheel\"\n" << kConfig;  // 41 rows, 6 units
+  std::ofstream(dir + "m.toml") << "config = \"small.toml\"\nwheels = [\"wheels/*.prw\", \"S1002\"]\n"
+                                   "rails = [\"UIC60\"]\n";
+  const std::string batch = " batch " + dir + "m.toml --quiet --threads 1 -o " + dir;
+  ASSERT_EQ(run_shell("", CTAB_EXECUTABLE + batch + "one", dir + "one"), 4) << read_text(dir + "one.err");
+  ASSERT_EQ(run_shell("", mpirun(2) + batch + "two", dir + "two"), 4) << read_text(dir + "two.err");
+  for (const char* table : {"w1__UIC60.h5", "S1002__UIC60.h5"}) {
+    ASSERT_TRUE(fs::exists(dir + "two/" + table)) << table;
+    EXPECT_EQ(read_text(dir + "two/" + table), read_text(dir + "one/" + table)) << table;
+  }
+  EXPECT_FALSE(fs::exists(dir + "two/bad__UIC60.h5"));
+  const std::string index = read_text(dir + "two/index.csv");
+  EXPECT_NE(index.find("\"bad__UIC60.h5\",\"" + dir + "wheels/bad.prw\",\"UIC60\",input-error,"), std::string::npos)
+      << index;
+  // Again: both tables are complete, so rank 0 resumes them and no rank solves anything.
+  ASSERT_EQ(run_shell("", mpirun(2) + batch + "two", dir + "again"), 4) << read_text(dir + "again.err");
+  const std::string again = read_text(dir + "two/index.csv");
+  EXPECT_NE(again.find("\"w1__UIC60.h5\",\"" + dir + "wheels/w1.prw\",\"UIC60\",ok,resumed,82,0,"), std::string::npos)
+      << again;
+  EXPECT_NE(again.find("\"S1002__UIC60.h5\",\"S1002\",\"UIC60\",ok,resumed,82,0,"), std::string::npos) << again;
 }
