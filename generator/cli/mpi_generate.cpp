@@ -3,11 +3,14 @@
 
 #include <mpi.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -25,7 +28,7 @@ constexpr int kRoot = 0;
 constexpr int kTagAssign = 1;  // rank 0 -> worker: one std::int64_t, a unit index or kStop
 constexpr int kTagResult = 2;  // worker -> rank 0: ResultHeader, then the unit's packed rows (none when failed)
 constexpr std::int64_t kStop = -1;
-// Rank 0 sleeps this long when no result is waiting and it has no unit left to solve itself.
+// Rank 0's main thread sleeps this long when no result is waiting (its solving thread works meanwhile).
 constexpr auto kPollInterval = std::chrono::microseconds(200);
 
 struct ResultHeader {
@@ -56,7 +59,9 @@ bool injected_failure(int rank) {
   return text != nullptr && std::atoi(text) == rank;
 }
 
-// A worker: solve assigned units into a scratch table and send their rows back until told to stop.
+// A worker: solve assigned units into a scratch table and send their rows back until told to stop. The blocking
+// send returns at once: rank 0's main thread does nothing but serve messages (a message of more than a few
+// kilobytes is delivered only while both ranks are inside MPI).
 void run_worker(const gen::TableSweep& sweep, const std::vector<std::vector<std::size_t>>& units, int rank) {
   tables::Table scratch = sweep.empty_table();
   const bool fail = injected_failure(rank);
@@ -65,23 +70,25 @@ void run_worker(const gen::TableSweep& sweep, const std::vector<std::vector<std:
     MPI_Recv(&unit, 1, MPI_INT64_T, kRoot, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (unit == kStop) return;
     const std::vector<std::size_t>& rows = units.at(static_cast<std::size_t>(unit));
-    std::vector<unsigned char> message(sizeof(ResultHeader));
     ResultHeader header{unit, 0};
+    std::vector<unsigned char> packed;
     try {
       if (fail) throw std::runtime_error("CTAB_MPI_TEST_FAIL_RANK");
       sweep.solve_rows(rows, scratch);
-      const std::vector<unsigned char> packed = gen::pack_rows(scratch, rows);
-      message.insert(message.end(), packed.begin(), packed.end());
+      packed = gen::pack_rows(scratch, rows);
     } catch (const std::exception&) {
       header.failed = 1;  // rank 0 marks the unit's cases SolverException
-      message.resize(sizeof(ResultHeader));
+      packed.clear();
     }
-    std::memcpy(message.data(), &header, sizeof header);
+    const auto* header_bytes = reinterpret_cast<const unsigned char*>(&header);
+    std::vector<unsigned char> message(header_bytes, header_bytes + sizeof header);
+    message.insert(message.end(), packed.begin(), packed.end());
     MPI_Send(message.data(), static_cast<int>(message.size()), MPI_BYTE, kRoot, kTagResult, MPI_COMM_WORLD);
   }
 }
 
-// Rank 0: the dispatcher, and a solver of its own between messages.
+// Rank 0: its main thread hands out units and stores results (and alone calls MPI); a second thread solves units
+// too (OpenMP inside), taking them from the same queue. Both write disjoint rows of the table.
 class Root {
  public:
   Root(const gen::TableSweep& sweep, const std::vector<std::vector<std::size_t>>& units, int workers,
@@ -92,18 +99,58 @@ class Root {
 
   tables::Table run() {
     for (int round = 0; round < kUnitsInFlight; ++round)
-      for (int worker = 1; worker <= workers_ && next_ < units_.size(); ++worker)
-        send_assignment(worker, static_cast<std::int64_t>(next_++));
-    while (done_ < units_.size()) {
-      if (receive_result()) continue;
-      if (next_ < units_.size()) solve_own(next_++);
-      else std::this_thread::sleep_for(kPollInterval);
+      for (int worker = 1; worker <= workers_; ++worker)
+        if (const auto unit = take_unit()) send_assignment(worker, static_cast<std::int64_t>(*unit));
+    {
+      const OwnSolver own(*this);
+      while (received_ + own_units_.load() < units_.size()) {
+        if (!receive_result()) std::this_thread::sleep_for(kPollInterval);
+        const std::size_t done = solves_done_ + own_solves_.load();
+        if (progress_ && done != reported_) progress_(reported_ = done, total_solves_);
+      }
     }
     for (int worker = 1; worker <= workers_; ++worker) send_assignment(worker, kStop);
     return std::move(table_);
   }
 
  private:
+  // The solving thread of rank 0, joined on destruction (also when the message loop throws).
+  class OwnSolver {
+   public:
+    explicit OwnSolver(Root& root) : root_(root), thread_([this] { root_.solve_own_units(); }) {}
+    ~OwnSolver() {
+      root_.stop_ = true;
+      thread_.join();
+    }
+    OwnSolver(const OwnSolver&) = delete;
+    OwnSolver& operator=(const OwnSolver&) = delete;
+
+   private:
+    Root& root_;
+    std::thread thread_;
+  };
+
+  std::optional<std::size_t> take_unit() {
+    const std::lock_guard lock(mutex_);
+    if (next_ >= units_.size()) return std::nullopt;
+    return next_++;
+  }
+
+  void solve_own_units() noexcept {
+    while (!stop_) {
+      const auto unit = take_unit();
+      if (!unit) return;
+      const auto& rows = units_[*unit];
+      try {
+        sweep_.solve_rows(rows, table_);
+      } catch (const std::exception&) {
+        gen::fail_rows(table_, rows, tables::CaseStatus::SolverException);
+      }
+      own_solves_ += sweep_.wheel_solves(rows.size());
+      ++own_units_;
+    }
+  }
+
   // Stores one waiting result, if any, and gives its worker the next unit; false when none was waiting.
   bool receive_result() {
     int waiting = 0;
@@ -123,24 +170,10 @@ class Root {
     const std::vector<unsigned char> packed(message.begin() + sizeof header, message.end());
     if (header.failed != 0 || !gen::unpack_rows(table_, rows, packed))
       gen::fail_rows(table_, rows, tables::CaseStatus::SolverException);
-    if (next_ < units_.size()) send_assignment(status.MPI_SOURCE, static_cast<std::int64_t>(next_++));
-    count_done(rows.size());
+    if (const auto unit = take_unit()) send_assignment(status.MPI_SOURCE, static_cast<std::int64_t>(*unit));
+    ++received_;
+    solves_done_ += sweep_.wheel_solves(rows.size());
     return true;
-  }
-
-  void solve_own(std::size_t unit) {
-    try {
-      sweep_.solve_rows(units_[unit], table_);
-    } catch (const std::exception&) {
-      gen::fail_rows(table_, units_[unit], tables::CaseStatus::SolverException);
-    }
-    count_done(units_[unit].size());
-  }
-
-  void count_done(std::size_t rows) {
-    ++done_;
-    solves_done_ += sweep_.wheel_solves(rows);
-    if (progress_) progress_(solves_done_, total_solves_);
   }
 
   const gen::TableSweep& sweep_;
@@ -148,7 +181,11 @@ class Root {
   int workers_;
   const gen::ProgressCallback& progress_;
   tables::Table table_;
-  std::size_t next_ = 0, done_ = 0, solves_done_ = 0, total_solves_ = 0;
+  std::mutex mutex_;  // guards next_
+  std::size_t next_ = 0;
+  std::size_t received_ = 0, solves_done_ = 0, total_solves_ = 0, reported_ = 0;  // main thread only
+  std::atomic<std::size_t> own_units_{0}, own_solves_{0};                         // written by the solving thread
+  std::atomic<bool> stop_{false};
 };
 
 }  // namespace

@@ -3,13 +3,14 @@
 //!
 //! Rank 0 hands out work units (case_partition.hpp: mirror-closed blocks of kRowsPerUnit lateral-shift rows)
 //! dynamically: each worker holds up to kUnitsInFlight assigned units, sends every solved unit back as packed rows
-//! (table_rows.hpp) and gets the next one; rank 0 solves units itself between messages. Every rank solves with
+//! (table_rows.hpp) and gets the next one; rank 0 solves units too, on a second thread, while its main thread
+//! serves the messages (and alone calls MPI: MPI_THREAD_FUNNELED). Every rank solves with
 //! TableSweep::solve_rows (OpenMP inside the rank), a case does not depend on which rows are solved with it, and
 //! slots and jumps are assigned by TableSweep::finish on rank 0 over the whole table, so the table is bit-identical
 //! to a single-process run. A worker whose unit throws reports the unit as failed (its cases SolverException); a
 //! set-up error on any rank (a profile missing on one machine, a bad output path on rank 0) stops every rank.
-//! Waits never spin: rank 0 polls (MPI_Iprobe) and sleeps briefly; workers block only for their next assignment,
-//! which rank 0 always sends (a unit or stop). A rank that dies ends the job through mpirun.
+//! Rank 0's main thread polls (MPI_Iprobe) and sleeps briefly, so it answers every worker within a fraction of a
+//! millisecond; workers block only for their next assignment, which rank 0 always sends (a unit or stop). A rank that dies ends the job through mpirun.
 //! For the tests only: the environment variable CTAB_MPI_TEST_FAIL_RANK=K makes worker rank K throw in each unit.
 #include <functional>
 #include <optional>
@@ -36,8 +37,7 @@ class MpiSession {
   int rank_ = 0, size_ = 1;
 };
 
-//! Units each worker holds at once: one being solved, one waiting, so that a worker never idles while rank 0 is
-//! busy solving a unit of its own.
+//! Units each worker holds at once: one being solved, one waiting, so that a worker never waits for rank 0.
 inline constexpr int kUnitsInFlight = 2;
 
 //! The table of `config` solved by every rank of `session` (size >= 2). `root_checks` runs on rank 0 before any
