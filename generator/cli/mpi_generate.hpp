@@ -1,5 +1,5 @@
 #pragma once
-//! `mpirun -n R ctab generate ...`: the sweep across MPI ranks (hybrid MPI x OpenMP), built with CTAB_WITH_MPI.
+//! `mpirun -n R ctab generate ...` (and `batch`): the sweep across MPI ranks (hybrid MPI x OpenMP), built with CTAB_WITH_MPI.
 //!
 //! Rank 0 hands out work units (case_partition.hpp: mirror-closed blocks of kRowsPerUnit lateral-shift rows)
 //! dynamically: each worker holds up to kUnitsInFlight assigned units, sends every solved unit back as packed rows
@@ -10,7 +10,8 @@
 //! to a single-process run. A worker whose unit throws reports the unit as failed (its cases SolverException); a
 //! set-up error on any rank (a profile missing on one machine, a bad output path on rank 0) stops every rank.
 //! Rank 0's main thread polls (MPI_Iprobe) and sleeps briefly, so it answers every worker within a fraction of a
-//! millisecond; workers block only for their next assignment, which rank 0 always sends (a unit or stop). A rank that dies ends the job through mpirun.
+//! millisecond; workers block only for their next assignment, which rank 0 always sends (a unit or stop). A rank
+//! that dies ends the job through mpirun. `mpirun -n R ctab batch` runs each pair this way (batch_command.cpp).
 //! For the tests only: the environment variable CTAB_MPI_TEST_FAIL_RANK=K makes worker rank K throw in each unit.
 #include <functional>
 #include <optional>
