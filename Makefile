@@ -4,6 +4,8 @@ BUILD_DIR ?= build
 BUILD_TYPE ?= Release
 JOBS ?= $(shell nproc)
 # `make sanitize`: a second build with AddressSanitizer + UndefinedBehaviorSanitizer, running the fast tests.
+# MPI (`mpirun -n R ctab generate`) where OpenMPI is installed; decided when the recipe runs, after `deps`.
+WITH_MPI ?= $$(command -v mpicc >/dev/null 2>&1 && echo ON || echo OFF)
 SANITIZE_DIR ?= build-asan
 SANITIZE_FLAGS ?= -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
@@ -18,7 +20,7 @@ deps:
 	@scripts/install_deps.sh
 
 $(BUILD_DIR)/build.ninja: | deps
-	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCTAB_WITH_MPI=$(WITH_MPI)
 
 configure: deps $(BUILD_DIR)/build.ninja
 

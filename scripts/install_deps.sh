@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libhdf5-dev libgtest-dev googletest
           libbenchmark-dev libcli11-dev ccache libtomlplusplus-dev nlohmann-json3-dev
-          python3-matplotlib python3-h5py)
+          python3-matplotlib python3-h5py openmpi-bin libopenmpi-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +19,9 @@
 #include "ctab/sweep/batch_manifest.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "exit_codes.hpp"
+#ifdef CTAB_WITH_MPI
+#include "mpi_generate.hpp"
+#endif
 #include "output_guard.hpp"
 #include "setup_options.hpp"
 #include "table_output.hpp"
@@ -117,15 +122,72 @@ bool is_complete(const std::string& path, const gen::TableConfig& config, const 
   return true;
 }
 
+#ifdef CTAB_WITH_MPI
+using Ranks = MpiSession;
+// Thrown by rank 0's checks to skip a pair whose table is complete (not an error: caught in solve_pair).
+struct PairResumed {};
+#else
+struct Ranks {  // a build without MPI: one process
+  [[nodiscard]] int rank() const noexcept { return 0; }
+  [[nodiscard]] int size() const noexcept { return 1; }
+};
+#endif
+
+// One pair's table, or nullopt when `is_resumed` (run first, on rank 0 alone) finds it complete. Under
+// `mpirun -n R` (R >= 2) every rank solves cases of it (mpi_generate.hpp) and only rank 0 gets the table.
+std::optional<tables::Table> solve_pair([[maybe_unused]] const Ranks& ranks, const gen::TableConfig& config,
+                                        const gen::GeneratorInfo& info, const std::function<bool()>& is_resumed,
+                                        const gen::ProgressCallback& progress) {
+#ifdef CTAB_WITH_MPI
+  if (ranks.size() > 1) {
+    try {
+      return generate_table_mpi(
+          ranks, config, info,
+          [&] {
+            if (is_resumed()) throw PairResumed{};
+          },
+          progress);
+    } catch (const PairResumed&) {
+      return std::nullopt;
+    }
+  }
+#endif
+  if (is_resumed()) return std::nullopt;
+  return gen::generate_table(config, info, progress);
+}
+
+#ifdef CTAB_WITH_MPI
+// A worker rank of `mpirun -n R ctab batch`: takes part in every pair rank 0 solves; rank 0 reports the pairs.
+int run_batch_worker(const Ranks& ranks, const gen::BatchManifest& manifest, const gen::GeneratorInfo& info) {
+  for (const gen::ProfilePair& pair : manifest.pairs) {
+    std::optional<gen::TableConfig> config;
+    try {
+      config = gen::pair_config(manifest, pair);  // throws on every rank alike: rank 0 skips the pair too
+    } catch (const gen::Error&) {
+      continue;
+    }
+    try {
+      (void)generate_table_mpi(ranks, *config, info, {}, {});
+    } catch (const gen::Error&) {  // this rank's set-up of the pair failed: rank 0 reports it
+    }
+  }
+  return kExitSuccess;
+}
+#endif
+
 int run_batch(const BatchOptions& o) {
   const gen::BatchManifest manifest = gen::read_batch_manifest(o.manifest);
-  std::error_code error;
-  fs::create_directories(o.directory, error);
-  if (!fs::is_directory(o.directory)) throw IoError(o.directory + ": cannot create the output directory");
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;
   info.git_commit = CTAB_GIT_COMMIT;
   info.threads = sweep_threads(o.threads);
+  const Ranks ranks;
+#ifdef CTAB_WITH_MPI
+  if (ranks.rank() != 0) return run_batch_worker(ranks, manifest, info);
+#endif
+  std::error_code error;
+  fs::create_directories(o.directory, error);
+  if (!fs::is_directory(o.directory)) throw IoError(o.directory + ": cannot create the output directory");
   const std::string config_sha256 = sha256_of_text(manifest.base.text);
   // One progress bar over the batch: every pair counts its wheel cases, whether solved, resumed or failed.
   const std::size_t per_pair =
@@ -144,17 +206,22 @@ int run_batch(const BatchOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     try {
       const gen::TableConfig config = gen::pair_config(manifest, pair);
-      const gen::SweepSetup setup = gen::make_sweep_setup(config);  // a bad profile throws here
-      if (is_complete(path, config, setup, outcome)) {
+      const auto is_resumed = [&] {
+        const gen::SweepSetup setup = gen::make_sweep_setup(config);  // a bad profile throws here
+        if (is_complete(path, config, setup, outcome)) return true;
+        check_output_path(path, "", false);
+        return false;
+      };
+      const std::optional<tables::Table> table =
+          solve_pair(ranks, config, info, is_resumed, [&](std::size_t done, std::size_t of) {
+            reporter(i * per_pair + (of > 0 ? done * per_pair / of : 0), total);
+          });
+      if (!table) {
         outcome.run = "resumed";
       } else {
-        check_output_path(path, "", false);
         const InterruptCleanup cleanup(path);
-        const tables::Table table = gen::generate_table(config, info, [&](std::size_t done, std::size_t of) {
-          reporter(i * per_pair + (of > 0 ? done * per_pair / of : 0), total);
-        });
-        write_table_checked(table, path);
-        count_statuses(table, outcome);
+        write_table_checked(*table, path);
+        count_statuses(*table, outcome);
         outcome.run = "generated";
       }
     } catch (const IoError& e) {

@@ -14,6 +14,9 @@
 #include "ctab/sweep/table_generator.hpp"
 #include "ctab/sweep/table_shard.hpp"
 #include "exit_codes.hpp"
+#ifdef CTAB_WITH_MPI
+#include "mpi_generate.hpp"
+#endif
 #include "output_guard.hpp"
 #include "setup_options.hpp"
 #include "table_output.hpp"
@@ -68,30 +71,14 @@ int run_shard(const gen::TableConfig& config, const gen::GeneratorInfo& info, ge
   return report_failed_cases(counts, o.output) ? kExitCaseFailed : kExitSuccess;
 }
 
-int run_generate(const GenerateOptions& o) {
-  const gen::TableConfig config =
-      o.config_path.empty() ? default_table_config("default config") : gen::read_table_config(o.config_path);
-  const gen::ShardSpec shard = o.shard.empty() ? gen::ShardSpec{} : gen::parse_shard_spec(o.shard, "--shard");
-  check_output_path(o.output, o.config_path, o.force);  // before the sweep: a bad output costs no solving time
-  gen::GeneratorInfo info;
-  info.version = CTAB_VERSION;
-  info.git_commit = CTAB_GIT_COMMIT;
-  info.compiler = CTAB_COMPILER;
-  info.build_flags = CTAB_BUILD_FLAGS;
-  info.threads = sweep_threads(o.threads);
-  const InterruptCleanup cleanup(o.output);
-  const auto start = std::chrono::steady_clock::now();
-  ProgressReporter reporter(o.quiet, "ctab generate");
-  const auto progress = [&](std::size_t d, std::size_t t) { reporter(d, t); };
-  if (!o.shard.empty()) return run_shard(config, info, shard, o, progress);
-  const tables::Table table = gen::generate_table(config, info, progress);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_table_checked(table, o.output);
+// The summary of a whole table (stdout unless quiet) and its failed cases (stderr); returns the exit code.
+int report_table(const tables::Table& table, const GenerateOptions& o, double seconds, int threads, int ranks) {
   std::map<int, std::size_t> counts;
   for (const auto s : table.status) ++counts[static_cast<int>(s)];
   if (!o.quiet) {
-    std::printf("ctab generate: %zu lateral shifts x %zu %s x 2 wheels in %.2f s on %d thread(s)%s\n", table.n_dy(),
-                table.n_second(), table.second_axis_name.c_str(), seconds, info.threads,
+    const std::string on_ranks = ranks > 1 ? " x " + std::to_string(ranks) + " MPI ranks" : "";
+    std::printf("ctab generate: %zu lateral shifts x %zu %s x 2 wheels in %.2f s on %d thread(s)%s%s\n", table.n_dy(),
+                table.n_second(), table.second_axis_name.c_str(), seconds, threads, on_ranks.c_str(),
                 table.text_attributes.at("mirrored").rfind("true", 0) == 0 ? " (left wheel mirrored)" : "");
     std::printf("wrote %s (%.1f kB); statuses:", o.output.c_str(),
                 static_cast<double>(std::filesystem::file_size(o.output)) / 1024.0);
@@ -102,12 +89,66 @@ int run_generate(const GenerateOptions& o) {
   return report_failed_cases(counts, o.output) ? kExitCaseFailed : kExitSuccess;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+#ifdef CTAB_WITH_MPI
+// `mpirun -n R ctab generate` with R >= 2 (mpi_generate.hpp): rank 0 checks the output, gathers and writes.
+int run_generate_mpi(const MpiSession& session, const gen::TableConfig& config, const gen::GeneratorInfo& info,
+                     const GenerateOptions& o) {
+  const bool root = session.rank() == 0;
+  const auto start = std::chrono::steady_clock::now();
+  ProgressReporter reporter(o.quiet || !root, "ctab generate");
+  const auto progress = [&](std::size_t d, std::size_t t) { reporter(d, t); };
+  const auto checks = [&] { check_output_path(o.output, o.config_path, o.force); };
+  const std::optional<tables::Table> table = generate_table_mpi(session, config, info, checks, progress);
+  if (!table) return kExitSuccess;  // a worker: rank 0 writes the table and reports
+  const double seconds = seconds_since(start);
+  const InterruptCleanup cleanup(o.output);
+  write_table_checked(*table, o.output);
+  return report_table(*table, o, seconds, info.threads, session.size());
+}
+#endif
+
+int run_generate(const GenerateOptions& o) {
+  const gen::TableConfig config =
+      o.config_path.empty() ? default_table_config("default config") : gen::read_table_config(o.config_path);
+  const gen::ShardSpec shard = o.shard.empty() ? gen::ShardSpec{} : gen::parse_shard_spec(o.shard, "--shard");
+  gen::GeneratorInfo info;
+  info.version = CTAB_VERSION;
+  info.git_commit = CTAB_GIT_COMMIT;
+  info.compiler = CTAB_COMPILER;
+  info.build_flags = CTAB_BUILD_FLAGS;
+  info.threads = sweep_threads(o.threads);
+#ifdef CTAB_WITH_MPI
+  const MpiSession session;
+  if (session.size() > 1) {
+    if (!o.shard.empty())
+      throw gen::InputError("--shard", 0, "not with MPI: run one process per shard, or mpirun without --shard");
+    return run_generate_mpi(session, config, info, o);
+  }
+#endif
+  check_output_path(o.output, o.config_path, o.force);  // before the sweep: a bad output costs no solving time
+  const InterruptCleanup cleanup(o.output);
+  const auto start = std::chrono::steady_clock::now();
+  ProgressReporter reporter(o.quiet, "ctab generate");
+  const auto progress = [&](std::size_t d, std::size_t t) { reporter(d, t); };
+  if (!o.shard.empty()) return run_shard(config, info, shard, o, progress);
+  const tables::Table table = gen::generate_table(config, info, progress);
+  const double seconds = seconds_since(start);
+  write_table_checked(table, o.output);
+  return report_table(table, o, seconds, info.threads, 1);
+}
+
 }  // namespace
 
 Command add_generate_command(CLI::App& parent) {
   auto o = std::make_shared<GenerateOptions>();
   CLI::App* app =
-      parent.add_subcommand("generate", "Generate a contact table (HDF5) from a TOML config or the embedded default");
+      parent.add_subcommand("generate",
+                            "Generate a contact table (HDF5) from a TOML config or the embedded default; "
+                            "`mpirun -n R ctab generate` shares the cases among R ranks (a build with CTAB_WITH_MPI)");
   app->add_option("config", o->config_path,
                   "TOML config (default: `ctab config --print-default`: S1002 on UIC60 1:40, "
                   "wheelset, -12..12 mm, 78.5 kN)");
