@@ -13,15 +13,28 @@
 #include "ctab/lookup/blob.hpp"
 #include "synthetic_table.hpp"
 
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+// Under AddressSanitizer the allocator is the sanitizer's: replacing malloc here would hand it foreign pointers.
+// Its allocation hook sees every allocation of this process instead.
+// Declared as in the sanitizer runtime's allocator_interface.h (not every Debian toolchain ships that header).
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, std::size_t),
+                                                         void (*free_hook)(const volatile void*));
+
+namespace {
+void count_allocation(const volatile void*, std::size_t) { g_allocations.fetch_add(1, std::memory_order_relaxed); }
+void ignore_free(const volatile void*) {}
+[[maybe_unused]] const int g_hooks_installed = __sanitizer_install_malloc_and_free_hooks(count_allocation, ignore_free);
+}  // namespace
+#else
 // glibc's own allocator entry points; every allocation of this process (operator new included) passes here.
 extern "C" void* __libc_malloc(std::size_t size);
 extern "C" void* __libc_calloc(std::size_t n, std::size_t size);
 extern "C" void* __libc_realloc(void* p, std::size_t size);
 extern "C" void* __libc_memalign(std::size_t alignment, std::size_t size);
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
 
 extern "C" void* malloc(std::size_t size) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
@@ -44,6 +57,7 @@ extern "C" int posix_memalign(void** out, std::size_t alignment, std::size_t siz
   *out = __libc_memalign(alignment, size);
   return *out ? 0 : 12;
 }
+#endif
 
 namespace ctab::lookup {
 namespace {
