@@ -198,7 +198,7 @@ void run_gap_scene(const Settings& settings, const std::string& scene, const gen
         settings, [&] { return gen::solve_normal_contact(gap, options, gen::Loading::approach(approach_m)); }, time_s);
     row_of(rows, scene, "all", rung, reference_label)
         .add(gen::summarise(solution), reference, gen::is_success(solution.status), time_s, contact);
-    std::fprintf(stderr, "  %s %s %.2f mm: %.3f s\n", scene.c_str(), gen::method_name(rung.method), rung.width_m * 1e3,
+    std::fprintf(stderr, "  %s %s %.2f mm: %.2e s\n", scene.c_str(), gen::method_name(rung.method), rung.width_m * 1e3,
                  time_s);
   }
 }
@@ -292,7 +292,7 @@ void run_wheelrail_scene(const Settings& settings, const std::map<long, ContactF
           .add(gen::summarise(result), reference[i], gen::is_success(result.status), time_s, figures);
       total_s += time_s;
     }
-    std::fprintf(stderr, "  wheelrail %s %.2f mm: %.3f s per case\n", gen::method_name(rung.method),
+    std::fprintf(stderr, "  wheelrail %s %.2f mm: %.2e s per case\n", gen::method_name(rung.method),
                  rung.width_m * 1e3, total_s / static_cast<double>(settings.shifts_m.size()));
   }
 }
@@ -323,11 +323,11 @@ void write_csv(const std::filesystem::path& path, const Rows& rows) {
   if (!out) throw IoError(path.string() + ": cannot be written");
 }
 
-//! The chart script: next to the working directory's scripts/, else the source tree's.
+//! The chart script: the source tree's scripts/ (CTAB_SCRIPTS_DIR), else the working directory's.
 std::filesystem::path chart_script() {
-  const std::filesystem::path local = std::filesystem::path("scripts") / "accuracy_chart.py";
-  if (std::filesystem::exists(local)) return local;
-  return std::filesystem::path(CTAB_SCRIPTS_DIR) / "accuracy_chart.py";
+  const std::filesystem::path built = std::filesystem::path(CTAB_SCRIPTS_DIR) / "accuracy_chart.py";
+  if (std::filesystem::exists(built)) return built;
+  return std::filesystem::path("scripts") / "accuracy_chart.py";
 }
 
 //! Runs /usr/bin/python3 SCRIPT CSV PREFIX; its exit code (-1 when it could not start or was killed).

@@ -34,7 +34,9 @@ TEST(AccuracyMetrics, SummaryAddsPatchesAndWeighsTheCentreOfPressureByLoad) {
   EXPECT_NEAR(profile_pressure_at(summary, 0.5e-3), 2e8, 1.0);    // between the first two strips
   EXPECT_NEAR(profile_pressure_at(summary, 11e-3), 4e8, 1.0);     // at a strip of the second patch
   EXPECT_DOUBLE_EQ(profile_pressure_at(summary, 5e-3), 0.0);      // between the patches
-  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, -1e-3), 0.0);     // outside
+  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, -0.4e-3), 1e8);   // outer half of the first strip
+  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, 12.4e-3), 2e8);   // outer half of the last strip
+  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, -0.6e-3), 0.0);   // outside
 }
 
 TEST(AccuracyMetrics, ErrorsAgainstAReference) {

@@ -90,7 +90,9 @@ void expect_contact_columns(const CsvTable* table_) {
     const std::string scene = field(*table_, row, "scene");
     const bool expected = scene == "nonhertz" || (scene == "wheelrail" && with_reference());
     EXPECT_EQ(!field(*table_, row, "vs_contact_area_error_rel").empty(), expected) << scene;
-    if (scene == "hertz_sphere") EXPECT_EQ(field(*table_, row, "contact_cases"), "0");
+    if (scene == "hertz_sphere") {
+      EXPECT_EQ(field(*table_, row, "contact_cases"), "0");
+    }
   }
 }
 

@@ -56,7 +56,13 @@ ContactSummary summarise(const WheelContact& contact) {
 
 double profile_pressure_at(const ContactSummary& summary, double y_m) noexcept {
   for (const auto& profile : summary.profiles) {
-    if (profile.empty() || y_m < profile.front().y_m || y_m > profile.back().y_m) continue;
+    if (profile.empty()) continue;
+    // a strip covers half the spacing to its neighbour beyond the first and last centres (its own width)
+    const double end_width = profile.size() > 1 ? 0.5 * (profile[1].y_m - profile[0].y_m) : 0.0;
+    const double last_width = profile.size() > 1 ? 0.5 * (profile.back().y_m - profile[profile.size() - 2].y_m) : 0.0;
+    if (y_m < profile.front().y_m - end_width || y_m > profile.back().y_m + last_width) continue;
+    if (y_m <= profile.front().y_m) return profile.front().p0_Pa;
+    if (y_m >= profile.back().y_m) return profile.back().p0_Pa;
     const auto upper = std::lower_bound(profile.begin(), profile.end(), y_m,
                                         [](const PressurePoint& p, double y) { return p.y_m < y; });
     if (upper == profile.begin()) return upper->p0_Pa;

@@ -29,7 +29,8 @@ struct ContactSummary {
 //! A wheel on its rail (y: the rail profile coordinate y_rail, as CONTACT's y_cop_rail).
 [[nodiscard]] ContactSummary summarise(const WheelContact& contact);
 
-//! p0 of a summary at y [Pa]: linear between the strips of the patch whose strip centres enclose y, else 0.
+//! p0 of a summary at y [Pa]: linear between the strip centres of the patch that covers y, the end strip's p0 over
+//! the outer half of that strip (half the spacing to its neighbour), else 0.
 [[nodiscard]] double profile_pressure_at(const ContactSummary& summary, double y_m) noexcept;
 
 struct AccuracyErrors {
