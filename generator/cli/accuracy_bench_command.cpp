@@ -305,7 +305,8 @@ void run_wheelrail_scene(const Settings& settings, const std::map<long, ContactF
     for (std::size_t i = 0; i < settings.shifts_m.size(); ++i) {
       const double dy = settings.shifts_m[i];
       double time_s = 0.0;
-      const gen::WheelContact result = timed(settings, [&] { return solve_right_wheel(setup, dy); }, time_s);
+      const gen::WheelContact result = timed(
+          settings, [&] { return solve_right_wheel(setup, dy); }, time_s);
       const auto found = contact.find(std::lround(dy * 1e6));
       const std::optional<ContactFigures> figures =
           found == contact.end() ? std::nullopt : std::optional<ContactFigures>(found->second);
@@ -313,8 +314,8 @@ void run_wheelrail_scene(const Settings& settings, const std::map<long, ContactF
           .add(gen::summarise(result), reference[i], gen::is_success(result.status), time_s, figures);
       total_s += time_s;
     }
-    std::fprintf(stderr, "  wheelrail %s %.2f mm: %.2e s per case\n", gen::method_name(rung.method),
-                 rung.width_m * 1e3, total_s / static_cast<double>(settings.shifts_m.size()));
+    std::fprintf(stderr, "  wheelrail %s %.2f mm: %.2e s per case\n", gen::method_name(rung.method), rung.width_m * 1e3,
+                 total_s / static_cast<double>(settings.shifts_m.size()));
   }
 }
 
@@ -334,11 +335,11 @@ void write_csv(const std::filesystem::path& path, const Rows& rows) {
     const double worst = std::max({r.worst.area_rel, r.worst.max_pressure_rel, r.worst.p0_profile_rms_rel});
     const bool has_contact = r.contact_cases > 0;
     out << r.scene << ',' << r.region << ',' << r.method << ',' << number(r.width_m) << ',' << r.reference << ','
-        << r.cases << ',' << r.failed << ',' << number(r.time_sum_s / r.cases) << ',' << number(r.worst.area_rel)
-        << ',' << number(r.worst.max_pressure_rel) << ',' << number(r.worst.p0_profile_rms_rel) << ','
+        << r.cases << ',' << r.failed << ',' << number(r.time_sum_s / r.cases) << ',' << number(r.worst.area_rel) << ','
+        << number(r.worst.max_pressure_rel) << ',' << number(r.worst.p0_profile_rms_rel) << ','
         << number(r.worst.contact_point_m) << ',' << number(worst) << ',' << r.contact_cases << ','
-        << (has_contact ? number(r.contact_area) : "") << ',' << (has_contact ? number(r.contact_pressure) : "")
-        << ',' << (has_contact ? number(r.contact_point) : "") << '\n';
+        << (has_contact ? number(r.contact_area) : "") << ',' << (has_contact ? number(r.contact_pressure) : "") << ','
+        << (has_contact ? number(r.contact_point) : "") << '\n';
   }
   out.flush();
   if (!out) throw IoError(path.string() + ": cannot be written");
@@ -406,8 +407,9 @@ Command add_bench_accuracy_subcommand(CLI::App& bench) {
   auto out = std::make_shared<std::string>("accuracy");
   auto quick = std::make_shared<bool>(false);
   auto reference = std::make_shared<std::string>();
-  CLI::App* app = bench.add_subcommand(
-      "accuracy", "Every method at several discretisations against a reference: error against time per case");
+  CLI::App* app =
+      bench.add_subcommand("accuracy",
+                           "Every method at several discretisations against a reference: error against time per case");
   app->add_option("--out", *out, "output directory for accuracy.csv, .png, .svg (default ./accuracy)");
   app->add_flag("--quick", *quick, "fewer shifts, a coarser reference (about a minute; what the tests run)");
   app->add_option("--reference", *reference,

@@ -31,12 +31,12 @@ TEST(AccuracyMetrics, SummaryAddsPatchesAndWeighsTheCentreOfPressureByLoad) {
   EXPECT_DOUBLE_EQ(summary.max_pressure_Pa, 4e8);
   EXPECT_DOUBLE_EQ(summary.normal_force_N, 4000.0);
   EXPECT_NEAR(summary.centre_of_pressure_m, (1000.0 * 1e-3 + 3000.0 * 11e-3) / 4000.0, 1e-15);
-  EXPECT_NEAR(profile_pressure_at(summary, 0.5e-3), 2e8, 1.0);    // between the first two strips
-  EXPECT_NEAR(profile_pressure_at(summary, 11e-3), 4e8, 1.0);     // at a strip of the second patch
-  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, 5e-3), 0.0);      // between the patches
-  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, -0.4e-3), 1e8);   // outer half of the first strip
-  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, 12.4e-3), 2e8);   // outer half of the last strip
-  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, -0.6e-3), 0.0);   // outside
+  EXPECT_NEAR(profile_pressure_at(summary, 0.5e-3), 2e8, 1.0);   // between the first two strips
+  EXPECT_NEAR(profile_pressure_at(summary, 11e-3), 4e8, 1.0);    // at a strip of the second patch
+  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, 5e-3), 0.0);     // between the patches
+  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, -0.4e-3), 1e8);  // outer half of the first strip
+  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, 12.4e-3), 2e8);  // outer half of the last strip
+  EXPECT_DOUBLE_EQ(profile_pressure_at(summary, -0.6e-3), 0.0);  // outside
 }
 
 TEST(AccuracyMetrics, ErrorsAgainstAReference) {

@@ -18,10 +18,23 @@ namespace {
 namespace fs = std::filesystem;
 using ctab::test::CsvTable;
 
-const std::vector<std::string> kColumns = {
-    "scene", "region", "method", "discretisation_m", "reference", "cases", "failed_cases", "time_per_case_s",
-    "area_error_rel", "max_pressure_error_rel", "p0_profile_rms_error_rel", "contact_point_error_m", "error_rel",
-    "contact_cases", "vs_contact_area_error_rel", "vs_contact_max_pressure_error_rel", "vs_contact_point_error_m"};
+const std::vector<std::string> kColumns = {"scene",
+                                           "region",
+                                           "method",
+                                           "discretisation_m",
+                                           "reference",
+                                           "cases",
+                                           "failed_cases",
+                                           "time_per_case_s",
+                                           "area_error_rel",
+                                           "max_pressure_error_rel",
+                                           "p0_profile_rms_error_rel",
+                                           "contact_point_error_m",
+                                           "error_rel",
+                                           "contact_cases",
+                                           "vs_contact_area_error_rel",
+                                           "vs_contact_max_pressure_error_rel",
+                                           "vs_contact_point_error_m"};
 
 std::string field(const CsvTable& t, const std::vector<std::string>& row, const std::string& name) {
   const std::size_t c = t.column(name);
@@ -56,7 +69,8 @@ void expect_finite(const CsvTable* table_) {
     for (const std::string name : {"time_per_case_s", "area_error_rel", "max_pressure_error_rel",
                                    "p0_profile_rms_error_rel", "contact_point_error_m", "error_rel"}) {
       const std::string text = field(*table_, row, name);
-      EXPECT_FALSE(text.empty()) << name << " of " << field(*table_, row, "scene") << " " << field(*table_, row, "method");
+      EXPECT_FALSE(text.empty()) << name << " of " << field(*table_, row, "scene") << " "
+                                 << field(*table_, row, "method");
       if (text.empty()) continue;
       EXPECT_TRUE(std::isfinite(std::stod(text))) << name << " = " << text;
       EXPECT_GE(std::stod(text), 0.0) << name;
@@ -117,9 +131,9 @@ TEST(AccuracyBench, QuickRun) {
 }
 
 TEST(AccuracyBench, MissingReferenceDirectoryIsAUsageError) {
-  const auto run = ctab::test::run_ctab({"bench", "accuracy", "--quick", "--out",
-                                         ::testing::TempDir() + "ctab_accuracy_bad", "--reference",
-                                         "/nonexistent/contact"});
+  const auto run =
+      ctab::test::run_ctab({"bench", "accuracy", "--quick", "--out", ::testing::TempDir() + "ctab_accuracy_bad",
+                            "--reference", "/nonexistent/contact"});
   EXPECT_EQ(run.exit_code, 2) << run.output();
   EXPECT_NE(run.err.find("/nonexistent/contact/wheelrail/summary.csv"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(fs::path(::testing::TempDir()) / "ctab_accuracy_bad" / "accuracy.csv"));

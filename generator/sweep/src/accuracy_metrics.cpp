@@ -20,7 +20,8 @@ void add_patch(ContactSummary& s, double force_N, double area_m2, double max_pre
 void finish(ContactSummary& s, double weighted_y) {
   s.centre_of_pressure_m = s.normal_force_N > 0.0 ? weighted_y / s.normal_force_N : 0.0;
   for (auto& profile : s.profiles)
-    std::sort(profile.begin(), profile.end(), [](const PressurePoint& a, const PressurePoint& b) { return a.y_m < b.y_m; });
+    std::sort(profile.begin(), profile.end(),
+              [](const PressurePoint& a, const PressurePoint& b) { return a.y_m < b.y_m; });
 }
 
 double relative(double value, double reference) noexcept {
@@ -85,8 +86,8 @@ AccuracyErrors accuracy_errors(const ContactSummary& candidate, const ContactSum
       squared_error += d * d;
       squared_reference += point.p0_Pa * point.p0_Pa;
     }
-  e.p0_profile_rms_rel = squared_reference > 0.0 ? std::sqrt(squared_error / squared_reference)
-                                                 : std::numeric_limits<double>::infinity();
+  e.p0_profile_rms_rel =
+      squared_reference > 0.0 ? std::sqrt(squared_error / squared_reference) : std::numeric_limits<double>::infinity();
   e.contact_point_m = std::fabs(candidate.centre_of_pressure_m - reference.centre_of_pressure_m);
   return e;
 }

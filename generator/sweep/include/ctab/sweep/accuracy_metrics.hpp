@@ -17,10 +17,10 @@ struct PressurePoint {
 
 //! What the chart compares: totals over all patches and the p0 profile of each patch (points sorted by y).
 struct ContactSummary {
-  double area_m2 = 0.0;                 //!< sum of the patch areas [m^2]
-  double max_pressure_Pa = 0.0;         //!< largest p0 of any patch [Pa]
-  double centre_of_pressure_m = 0.0;    //!< load-weighted mean lateral position of all patches [m]
-  double normal_force_N = 0.0;          //!< sum of the patch loads [N]
+  double area_m2 = 0.0;                              //!< sum of the patch areas [m^2]
+  double max_pressure_Pa = 0.0;                      //!< largest p0 of any patch [Pa]
+  double centre_of_pressure_m = 0.0;                 //!< load-weighted mean lateral position of all patches [m]
+  double normal_force_N = 0.0;                       //!< sum of the patch loads [N]
   std::vector<std::vector<PressurePoint>> profiles;  //!< one per patch, y increasing
 };
 
@@ -34,11 +34,11 @@ struct ContactSummary {
 [[nodiscard]] double profile_pressure_at(const ContactSummary& summary, double y_m) noexcept;
 
 struct AccuracyErrors {
-  double area_rel = 0.0;            //!< |A - A_ref| / A_ref [-]
-  double max_pressure_rel = 0.0;    //!< |pmax - pmax_ref| / pmax_ref [-]
+  double area_rel = 0.0;          //!< |A - A_ref| / A_ref [-]
+  double max_pressure_rel = 0.0;  //!< |pmax - pmax_ref| / pmax_ref [-]
   //! RMS relative error of the p0 profile at the reference's strips: sqrt(sum (p - p_ref)^2 / sum p_ref^2) [-]
   double p0_profile_rms_rel = 0.0;
-  double contact_point_m = 0.0;     //!< |centre of pressure - reference's| [m]
+  double contact_point_m = 0.0;  //!< |centre of pressure - reference's| [m]
 };
 
 //! Errors of `candidate` against `reference` (a reference without contact gives infinite relative errors).
