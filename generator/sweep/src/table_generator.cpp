@@ -454,6 +454,7 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   number["gauge_m"] = config.track.gauge_m;
   number["nominal_radius_m"] = config.track.nominal_radius_m;
   table.integer_attributes["threads"] = plan.threads;
+  table.integer_attributes[tables::kCompressionLevelAttribute] = static_cast<std::int64_t>(config.compression_level);
 }
 
 }  // namespace
