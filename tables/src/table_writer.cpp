@@ -16,9 +16,9 @@ using detail::Handle;
 
 TableResult fail(const std::string& message) { return {TableStatus::WriteFailed, message}; }
 
-// Chunked, shuffled and deflated (level 4) for non-empty datasets; no timestamps, so the same table gives the
-// same bytes.
-Handle dataset_properties(const std::vector<hsize_t>& shape, hsize_t count) {
+// Chunked; shuffled and deflated at `level` (compression_level) unless it is 0; no timestamps, so the same table
+// gives the same bytes at any level (zlib's output depends only on its input and level).
+Handle dataset_properties(const std::vector<hsize_t>& shape, hsize_t count, std::int64_t level) {
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_obj_track_times(dcpl.get(), false);
   if (count > 0) {
@@ -30,18 +30,20 @@ Handle dataset_properties(const std::vector<hsize_t>& shape, hsize_t count) {
     };
     while (chunk.size() > 1 && elements() > 65536 && chunk[0] > 1) chunk[0] = std::max<hsize_t>(1, chunk[0] / 2);
     H5Pset_chunk(dcpl.get(), static_cast<int>(chunk.size()), chunk.data());
-    H5Pset_shuffle(dcpl.get());
-    H5Pset_deflate(dcpl.get(), 4);
+    if (level > 0) {
+      H5Pset_shuffle(dcpl.get());
+      H5Pset_deflate(dcpl.get(), static_cast<unsigned>(level));
+    }
   }
   return dcpl;
 }
 
 bool write_dataset(hid_t file, const char* path, const std::vector<hsize_t>& shape, hid_t file_type, hid_t memory_type,
-                   const void* data, const char* units, const char* description) {
+                   const void* data, const char* units, const char* description, std::int64_t level) {
   hsize_t count = 1;
   for (const hsize_t d : shape) count *= d;
   const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose);
-  const Handle dcpl = dataset_properties(shape, count);
+  const Handle dcpl = dataset_properties(shape, count, level);
   const Handle dataset(H5Dcreate2(file, path, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), H5Dclose);
   return dataset.valid() &&
          (count == 0 || H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0) &&
@@ -64,7 +66,7 @@ TableResult write_arrays(hid_t file, const Table& const_table, const std::string
     if (f.element == detail::Element::Status) file_type = status_file.get(), memory_type = status_memory.get();
     const bool second = f.extent == detail::Extent::SecondAxis;
     if (!write_dataset(file, f.path, shape, file_type, memory_type, f.data(),
-                       second ? table.second_axis_units.c_str() : f.units, f.description))
+                       second ? table.second_axis_units.c_str() : f.units, f.description, compression_level(table)))
       return fail(path + ": cannot write " + f.path);
     if (second) {
       const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
@@ -88,7 +90,8 @@ TableResult write_jumps(hid_t file, const Table& table, const std::string& path)
   const Handle file_type(detail::make_jump_file_type(), H5Tclose);
   if (!write_dataset(file, detail::kJumpsPath, {static_cast<hsize_t>(rows.size())}, file_type.get(), memory.get(),
                      rows.data(), "-",
-                     "contact jumps: a slot appears, disappears or moves between dy_low_m and dy_high_m"))
+                     "contact jumps: a slot appears, disappears or moves between dy_low_m and dy_high_m",
+                     compression_level(table)))
     return fail(path + ": cannot write /jumps");
   return {};
 }
@@ -125,6 +128,12 @@ TableResult write_file(const Table& table, const std::string& path) {
 }
 
 }  // namespace
+
+std::int64_t compression_level(const Table& table) noexcept {
+  const auto found = table.integer_attributes.find(kCompressionLevelAttribute);
+  if (found == table.integer_attributes.end()) return kDefaultCompressionLevel;
+  return std::clamp(found->second, kMinCompressionLevel, kMaxCompressionLevel);
+}
 
 std::string temporary_path(const std::string& path) { return path + ".tmp-" + std::to_string(::getpid()); }
 

@@ -46,6 +46,7 @@ vertical_load_N = 78.5e3 # one value: fixed; a list or {start, stop, step}: a se
 
 [output]
 strip_samples = 32
+compression = 1         # HDF5 deflate level: 0 (none, fastest, ~4x larger) .. 9 (smallest, slowest)
 )";
 
 namespace {
@@ -262,6 +263,9 @@ void read_axes(const Reader& r, TableConfig& c) {
 void read_output(const Reader& r, TableConfig& c) {
   c.strip_samples = r.integer_in("output", "strip_samples", c.strip_samples, 2, 1024);
   c.patch_slots = r.integer_in("output", "patch_slots", c.patch_slots, 1, kMaxPatchSlots);
+  c.compression_level = r.integer_in("output", "compression", c.compression_level,
+                                     static_cast<std::size_t>(tables::kMinCompressionLevel),
+                                     static_cast<std::size_t>(tables::kMaxCompressionLevel));
 }
 
 // Case count and table size, both before anything is allocated for the table.
@@ -317,7 +321,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
        {"solver", {"mode", "method", "strip_width_m"}},
        {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
-       {"output", {"strip_samples", "patch_slots"}}});
+       {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;
   c.source = source;
   c.text = text;

@@ -313,6 +313,43 @@ void run_with_progress(const std::function<void()>& work, const std::atomic<std:
   if (progress) progress(total, total);
 }
 
+// For each of `rows` (lateral-shift indices), the position in `rows` of the row whose roll it mirrors, or
+// kSolveRoll where its roll is solved. Mirrored wheelset sweeps solve only dy >= 0: on mirror-image sides
+// roll(-dy) = -roll(dy) to the bit (the mismatch z_right - z_left is exactly antisymmetric in (dy, roll), and the
+// bracketed root finder's steps, from the symmetric bracket on, are exactly mirrored). The rows of a mirrored
+// sweep are mirror-closed (TableSweep::solve_rows, sweep_units), so the source row is always among them.
+constexpr std::size_t kSolveRoll = static_cast<std::size_t>(-1);
+
+std::vector<std::size_t> roll_sources(const SweepSetup& setup, const SweepPlan& plan,
+                                      const std::vector<std::size_t>& rows) {
+  std::vector<std::size_t> source(rows.size(), kSolveRoll);
+  if (!plan.mirrored || setup.mode != ContactMode::Wheelset) return source;
+  const std::size_t n_dy = plan.dy_m.size();
+  std::vector<std::size_t> position(n_dy, kSolveRoll);
+  for (std::size_t k = 0; k < rows.size(); ++k) position[rows[k]] = k;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (plan.dy_m[rows[k]] < 0.0) source[k] = position[n_dy - 1 - rows[k]];
+  return source;
+}
+
+// The rolls of `rows`: those with a source row mirror it (a failed source is solved directly, so that its detail
+// names its own dy).
+void solve_rolls(const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
+                 std::vector<CaseRoll>& rolls) {
+  const std::vector<std::size_t> source = roll_sources(setup, plan, rows);
+  std::vector<std::size_t> solved;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (source[k] == kSolveRoll) solved.push_back(k);
+  // schedule(dynamic): the roll iteration costs more where the contact jumps.
+#pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
+  for (std::size_t j = 0; j < solved.size(); ++j) rolls[solved[j]] = solve_case_roll(setup, plan.dy_m[rows[solved[j]]]);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (source[k] == kSolveRoll) continue;
+    const CaseRoll& mirror = rolls[source[k]];
+    rolls[k] = mirror.converged ? CaseRoll{-mirror.roll_rad, true, ""} : solve_case_roll(setup, plan.dy_m[rows[k]]);
+  }
+}
+
 // Rolls (one per selected lateral shift) then every solved wheel of every selected case, each task writing only
 // its own slot. `rows` are lateral-shift indices; results are indexed (side, k, i_second) with k the position in
 // `rows`, rolls by k. A case's solve depends on nothing but its own inputs, so any subset gives the same values.
@@ -325,9 +362,7 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, con
   std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(plan.threads));  // one per thread
   std::atomic<std::size_t> done{0};
   auto work = [&] {
-  // schedule(dynamic): the roll iteration costs more where the contact jumps.
-#pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
-    for (std::size_t k = 0; k < n_rows; ++k) rolls[k] = solve_case_roll(setup, plan.dy_m[rows[k]]);
+    solve_rolls(setup, plan, rows, rolls);
       // schedule(dynamic): flange cases cost several times tread cases.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
     for (std::size_t task = 0; task < total; ++task) {
@@ -419,6 +454,7 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   number["gauge_m"] = config.track.gauge_m;
   number["nominal_radius_m"] = config.track.nominal_radius_m;
   table.integer_attributes["threads"] = plan.threads;
+  table.integer_attributes[tables::kCompressionLevelAttribute] = static_cast<std::int64_t>(config.compression_level);
 }
 
 }  // namespace

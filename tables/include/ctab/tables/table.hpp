@@ -125,6 +125,16 @@ struct TableResult {
   [[nodiscard]] bool ok() const noexcept { return status == TableStatus::Ok; }
 };
 
+//! Root integer attribute that sets the deflate level of the file's datasets (0: no compression filters, 1..9 zlib
+//! levels), written like any provenance attribute so that shards and merges keep it. Absent: kDefaultCompressionLevel.
+inline constexpr const char* kCompressionLevelAttribute = "compression_level";
+inline constexpr std::int64_t kMinCompressionLevel = 0;
+inline constexpr std::int64_t kMaxCompressionLevel = 9;
+//! Chosen from a measurement of write time against file size (tables/README.md, "Compression").
+inline constexpr std::int64_t kDefaultCompressionLevel = 1;
+//! The deflate level write_table uses for `table` (the attribute clamped to 0..9, or the default).
+[[nodiscard]] std::int64_t compression_level(const Table& table) noexcept;
+
 //! Writes to `temporary_path(path)`, then renames onto `path`: an existing table is replaced only on success,
 //! and a failed or interrupted write never leaves a partial table under `path`.
 [[nodiscard]] TableResult write_table(const Table& table, const std::string& path);

@@ -11,6 +11,7 @@
 
 #include "ctab/wheelrail/contact_geometry_sweep.hpp"
 #include "ctab/contact/material.hpp"
+#include "ctab/tables/table.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "ctab/wheelrail/wheelrail_options.hpp"
 
@@ -51,6 +52,9 @@ struct TableConfig {
   bool second_axis = false;         //!< true when the load or approach is an axis of the table
   std::size_t strip_samples = 32;   //!< points of the resampled strip profiles per patch
   std::size_t patch_slots = 3;      //!< patch slots per wheel and case in the table ([output], 1..16)
+  //! HDF5 deflate level of the table ([output] compression, 0 = none .. 9), written as the root attribute
+  //! compression_level (tables::kCompressionLevelAttribute).
+  std::size_t compression_level = static_cast<std::size_t>(tables::kDefaultCompressionLevel);
   std::size_t key_line(const std::string& key) const;  //!< source line of a key (0 if unknown)
   std::vector<std::pair<std::string, std::size_t>> key_lines;
 };
