@@ -153,8 +153,9 @@ TEST(SlotAssignment, HollowWornWheelSlotsFollowTheContacts) {
   const std::size_t at_0 = 40, at_half = 42;  // dy = 0 and 0.5 mm
   for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
     const std::size_t a = table.patch_index(at_0, 0, wheel, slot), b = table.patch_index(at_half, 0, wheel, slot);
-    if (table.patch.present[a] && table.patch.present[b])
+    if (table.patch.present[a] && table.patch.present[b]) {
       EXPECT_NEAR(table.patch.y_rail_m[a], table.patch.y_rail_m[b], 1e-3) << "slot " << slot;
+    }
   }
 }
 
