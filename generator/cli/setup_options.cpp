@@ -127,6 +127,16 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
     add(app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
             ->capture_default_str()
             ->check(finite_range(kMinStripWidth_m, kMaxStripWidth_m, "m")));
+    add(app.add_option_function<std::string>(
+               "--reference-point",
+               [&c](const std::string& name) {
+                 c.reference_at_interpenetration_centre = *gen::parse_reference_point(name);
+               },
+               "contact plane of a patch: deepest (rigid deepest point) or interpenetration-centre (CONTACT's rule; "
+               "README \"Flange and flank\")")
+            ->check(CLI::IsMember({std::string(gen::kReferencePointDeepest), std::string(gen::kReferencePointCentre)}))
+            ->default_str(std::string(c.reference_at_interpenetration_centre ? gen::kReferencePointCentre
+                                                                             : gen::kReferencePointDeepest)));
   }
   if (groups & kMaterial) {
     const NumberRule youngs{"a finite Young's modulus > 0 in Pa", [](double v) { return std::isfinite(v) && v > 0.0; }};

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "cli_run.hpp"
 #include "ctab/contact/error.hpp"
@@ -78,5 +80,61 @@ TEST(CliMethod, TableConfigMethodReachesTheTableAndSolveConfig) {
     const auto json = nlohmann::json::parse(run.out);
     EXPECT_EQ(json["method"], method);
     EXPECT_GT(right_force_at_0, 70e3) << method;
+  }
+}
+
+// `--reference-point` and `[solver] reference_point` (issue 8): on the flange flank (dy 7.5 mm, built-in S1002 on
+// UIC60 1:40, single wheel) the deepest rigid point sits where the rail slope is -70 deg; CONTACT's rule puts the
+// contact plane at the centre of the interpenetration region, which moves the rail point by about 0.07 mm. Both
+// balance the vertical load; the config key reaches `ctab solve --config`; a bad name is an input error (exit 2).
+TEST(CliMethod, ReferencePointMovesTheFlankContactPlane) {
+  const auto solve = [](const std::vector<std::string>& extra) {
+    std::vector<std::string> arguments = {"solve", "--mode", "wheel",           "--side", "right",
+                                          "--dy",  "7.5e-3", "--vertical-load", "78.5e3", "--json"};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    const ctab::test::CtabRun run = ctab::test::run_ctab(arguments);
+    EXPECT_EQ(run.exit_code, 0) << run.output();
+    return nlohmann::json::parse(run.out)["right"];
+  };
+  const auto deepest = solve({}), centre = solve({"--reference-point", "interpenetration-centre"});
+  ASSERT_EQ(deepest["patches"].size(), 1u);
+  ASSERT_EQ(centre["patches"].size(), 1u);
+  for (const auto* wheel : {&deepest, &centre}) {
+    EXPECT_EQ((*wheel)["status"], "converged");
+    EXPECT_NEAR((*wheel)["vertical_load_N"].get<double>(), 78.5e3, 1.0);
+  }
+  const double rail_shift_m =
+      centre["patches"][0]["y_rail_m"].get<double>() - deepest["patches"][0]["y_rail_m"].get<double>();
+  EXPECT_GT(std::abs(rail_shift_m), 0.03e-3) << "the centre rule must move the contact plane on the flank";
+  EXPECT_LT(std::abs(rail_shift_m), 0.5e-3);
+
+  const std::string path =
+      ctab::test::write_temp("reference_point.toml",
+                             "[solver]\nmode = \"wheel\"\nreference_point = \"interpenetration-centre\"\n"
+                             "[axes]\nlateral_displacement_m = { start = 7.5e-3, stop = 7.5e-3, step = 1e-3 }\n"
+                             "vertical_load_N = 78.5e3\n");
+  const ctab::test::CtabRun from_config =
+      ctab::test::run_ctab({"solve", "--config", path, "--dy", "7.5e-3", "--side", "right", "--json"});
+  ASSERT_EQ(from_config.exit_code, 0) << from_config.output();
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(from_config.out)["right"]["patches"][0]["y_rail_m"].get<double>(),
+                   centre["patches"][0]["y_rail_m"].get<double>());
+
+  const ctab::test::CtabRun bad = ctab::test::run_ctab(
+      {"solve", "--mode", "wheel", "--dy", "0", "--vertical-load", "78.5e3", "--reference-point", "middle"});
+  EXPECT_EQ(bad.exit_code, 2) << bad.output();
+  EXPECT_NE(bad.err.find("--reference-point"), std::string::npos) << bad.err;
+  const std::string bad_path =
+      ctab::test::write_temp("bad_reference_point.toml",
+                             "[solver]\nreference_point = \"middle\"\n" +
+                                 std::string("[axes]\nlateral_displacement_m = { start = 0, stop = "
+                                             "1e-3, step = 1e-3 }\nvertical_load_N = 78.5e3\n"));
+  try {
+    (void)ctab::gen::read_table_config(bad_path);
+    ADD_FAILURE() << "no error for reference_point = \"middle\"";
+  } catch (const ctab::gen::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected \"deepest\" or \"interpenetration-centre\", got \"middle\""),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.line(), 2u);
   }
 }

@@ -36,8 +36,9 @@ poisson_ratio = 0.3
 
 [solver]
 mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "wheel" (single wheel, roll 0)
-method = "mim1d"         # "hertz", "kp", "analyn" or "mim1d" (README "Method ladder")
+method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (README "Method ladder")
 strip_width_m = 0.2e-3
+reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
 
 [axes]
 lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.1e-3 }
@@ -46,7 +47,7 @@ vertical_load_N = 78.5e3 # one value: fixed; a list or {start, stop, step}: a se
 
 [output]
 strip_samples = 32
-compression = 1         # HDF5 deflate level: 0 (none, fastest, ~4x larger) .. 9 (smallest, slowest)
+compression = 1         # HDF5 deflate level: 0 (none, fastest, ~3x larger) .. 9 (smallest, slowest)
 )";
 
 namespace {
@@ -232,6 +233,12 @@ void read_solver(const Reader& r, TableConfig& c) {
   c.method = *parsed;
   c.strip_width_m = r.number_in("solver", "strip_width_m", c.strip_width_m, kMinStripWidth_m, kMaxStripWidth_m,
                                 "a strip width in [1e-05, 0.005] m");
+  const std::optional<bool> centre = parse_reference_point(r.text("solver", "reference_point", "deepest"));
+  if (!centre)
+    r.fail(*r.find("solver", "reference_point"), "solver.reference_point",
+           "expected \"deepest\" or \"interpenetration-centre\", got \"" + r.text("solver", "reference_point", "") +
+               "\"");
+  c.reference_at_interpenetration_centre = *centre;
 }
 
 void read_axes(const Reader& r, TableConfig& c) {
@@ -263,9 +270,9 @@ void read_axes(const Reader& r, TableConfig& c) {
 void read_output(const Reader& r, TableConfig& c) {
   c.strip_samples = r.integer_in("output", "strip_samples", c.strip_samples, 2, 1024);
   c.patch_slots = r.integer_in("output", "patch_slots", c.patch_slots, 1, kMaxPatchSlots);
-  c.compression_level = r.integer_in("output", "compression", c.compression_level,
-                                     static_cast<std::size_t>(tables::kMinCompressionLevel),
-                                     static_cast<std::size_t>(tables::kMaxCompressionLevel));
+  c.compression_level =
+      r.integer_in("output", "compression", c.compression_level, static_cast<std::size_t>(tables::kMinCompressionLevel),
+                   static_cast<std::size_t>(tables::kMaxCompressionLevel));
 }
 
 // Case count and table size, both before anything is allocated for the table.
@@ -319,7 +326,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
       {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
        {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
-       {"solver", {"mode", "method", "strip_width_m"}},
+       {"solver", {"mode", "method", "strip_width_m", "reference_point"}},
        {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;

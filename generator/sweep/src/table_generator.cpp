@@ -98,6 +98,7 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.E_star_Pa = effective_modulus(config.material, config.material);
   setup.options.method = config.method;
   setup.options.mim1d.strip_width_m = config.strip_width_m;  // range checked by the config
+  setup.options.reference_at_interpenetration_centre = config.reference_at_interpenetration_centre;
   setup.mode = config.mode;
   setup.load_kind = config.load_kind;
   (void)StripKernel::instance();  // process-wide tables are built here, not inside a parallel region
@@ -363,7 +364,7 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, con
   std::atomic<std::size_t> done{0};
   auto work = [&] {
     solve_rolls(setup, plan, rows, rolls);
-      // schedule(dynamic): flange cases cost several times tread cases.
+    // schedule(dynamic): flange cases cost several times tread cases.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
     for (std::size_t task = 0; task < total; ++task) {
       const std::size_t side = task / row_cases, rest = task % row_cases;

@@ -46,6 +46,9 @@ struct TableConfig {
   ContactMode mode = ContactMode::Wheelset;
   NormalMethod method = NormalMethod::Mim1d;
   double strip_width_m = 0.2e-3;
+  //! [solver] reference_point: "deepest" (false, the default) or "interpenetration-centre" (true, CONTACT's rule):
+  //! where a patch's contact plane is placed (WheelRailOptions::reference_at_interpenetration_centre).
+  bool reference_at_interpenetration_centre = false;
   std::vector<double> lateral_displacement_m;  //!< uniform axis [m]
   LoadKind load_kind = LoadKind::VerticalForce;
   std::vector<double> load_values;  //!< second axis, or one fixed value [N or m]

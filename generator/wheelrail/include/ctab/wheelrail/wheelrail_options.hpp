@@ -2,6 +2,8 @@
 //! Loading kinds, normal-contact methods and options of the wheel-rail contact (wheelrail_contact.hpp), free of
 //! Eigen so that configurations can hold them.
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include "ctab/contact/contact_method.hpp"
 #include "ctab/contact/mim1d_options.hpp"
@@ -34,5 +36,16 @@ struct WheelRailOptions {
   //! interpolated default table's flange force by up to 4.4 % at dy 6.33 mm (lookup_accuracy_test guard 3 %).
   bool reference_at_interpenetration_centre = false;
 };
+
+//! Names of the contact reference point (config [solver] reference_point, CLI --reference-point).
+inline constexpr std::string_view kReferencePointDeepest = "deepest";
+inline constexpr std::string_view kReferencePointCentre = "interpenetration-centre";
+
+//! "deepest" -> false, "interpenetration-centre" -> true (reference_at_interpenetration_centre); else nullopt.
+[[nodiscard]] inline std::optional<bool> parse_reference_point(std::string_view name) noexcept {
+  if (name == kReferencePointDeepest) return false;
+  if (name == kReferencePointCentre) return true;
+  return std::nullopt;
+}
 
 }  // namespace ctab::gen
