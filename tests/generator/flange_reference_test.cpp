@@ -19,6 +19,7 @@
 #include "ctab/contact/material.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
+#include "manchester_side.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;
@@ -95,18 +96,13 @@ class FlangeReference : public ::testing::TestWithParam<Case> {
  protected:
   static void SetUpTestSuite() {
     CTAB_REQUIRE_SHARED();
-    ProfileReadOptions o;
-    o.inclination = 0.0;
-    wheel_ =
-        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, o));
-    rail_ =
-        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_UIC60_v3.prr"), ProfileRole::Rail, o));
-    side_ = new SideGeometry(*wheel_, *rail_, TrackSetup{});
+    manchester_ = new ctab::test::ManchesterSide;
+    side_ = &manchester_->side;
   }
   static void TearDownTestSuite() {
-    delete side_;
-    delete rail_;
-    delete wheel_;
+    delete manchester_;
+    manchester_ = nullptr;
+    side_ = nullptr;
   }
 
   static Errors measure(const Case& c) {
@@ -152,13 +148,11 @@ class FlangeReference : public ::testing::TestWithParam<Case> {
     return e;
   }
 
-  static ProfileTable* wheel_;
-  static ProfileTable* rail_;
-  static SideGeometry* side_;
+  static ctab::test::ManchesterSide* manchester_;
+  static const SideGeometry* side_;
 };
-ProfileTable* FlangeReference::wheel_ = nullptr;
-ProfileTable* FlangeReference::rail_ = nullptr;
-SideGeometry* FlangeReference::side_ = nullptr;
+ctab::test::ManchesterSide* FlangeReference::manchester_ = nullptr;
+const SideGeometry* FlangeReference::side_ = nullptr;
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "ctab/contact/material.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
+#include "manchester_side.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;
@@ -27,26 +28,19 @@ class WheelRailContact : public ::testing::TestWithParam<Case> {
  protected:
   static void SetUpTestSuite() {
     CTAB_REQUIRE_SHARED();
-    ProfileReadOptions o;
-    o.inclination = 0.0;
-    wheel_ =
-        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, o));
-    rail_ =
-        new ProfileTable(load_profile(ctab::test::shared_path("profiles/MBench_UIC60_v3.prr"), ProfileRole::Rail, o));
-    side_ = new SideGeometry(*wheel_, *rail_, TrackSetup{});
+    manchester_ = new ctab::test::ManchesterSide;
+    side_ = &manchester_->side;
   }
   static void TearDownTestSuite() {
-    delete side_;
-    delete rail_;
-    delete wheel_;
+    delete manchester_;
+    manchester_ = nullptr;
+    side_ = nullptr;
   }
-  static ProfileTable* wheel_;
-  static ProfileTable* rail_;
-  static SideGeometry* side_;
+  static ctab::test::ManchesterSide* manchester_;
+  static const SideGeometry* side_;
 };
-ProfileTable* WheelRailContact::wheel_ = nullptr;
-ProfileTable* WheelRailContact::rail_ = nullptr;
-SideGeometry* WheelRailContact::side_ = nullptr;
+ctab::test::ManchesterSide* WheelRailContact::manchester_ = nullptr;
+const SideGeometry* WheelRailContact::side_ = nullptr;
 
 // p0 along the patch: ours interpolated at CONTACT's rows (by rail y), RMS over max.
 double p0_rms(const WheelContact& c, const std::string& tag) {

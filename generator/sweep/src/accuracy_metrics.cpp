@@ -31,28 +31,34 @@ double relative(double value, double reference) noexcept {
 
 }  // namespace
 
-ContactSummary summarise(const NormalSolution& solution) {
+namespace {
+
+// Sums patches of either solution type: `centre_of` gives a patch's centre of pressure [m], `y_of` a strip's y [m].
+template <class Patches, class CentreOf, class StripY>
+ContactSummary summarise_patches(const Patches& patches, CentreOf centre_of, StripY y_of) {
   ContactSummary s;
   double weighted_y = 0.0;
-  for (const PatchSolution& patch : solution.patches) {
-    add_patch(s, patch.normal_force_N, patch.area_m2, patch.max_pressure_Pa, patch.centre_of_pressure_y_m, weighted_y);
+  for (const auto& patch : patches) {
+    add_patch(s, patch.normal_force_N, patch.area_m2, patch.max_pressure_Pa, centre_of(patch), weighted_y);
     auto& profile = s.profiles.emplace_back();
-    for (const StripSolution& strip : patch.strips) profile.push_back({strip.y_m, strip.p0_Pa});
+    for (const auto& strip : patch.strips) profile.push_back({y_of(strip), strip.p0_Pa});
   }
   finish(s, weighted_y);
   return s;
 }
 
+}  // namespace
+
+ContactSummary summarise(const NormalSolution& solution) {
+  return summarise_patches(
+      solution.patches, [](const PatchSolution& p) { return p.centre_of_pressure_y_m; },
+      [](const StripSolution& strip) { return strip.y_m; });
+}
+
 ContactSummary summarise(const WheelContact& contact) {
-  ContactSummary s;
-  double weighted_y = 0.0;
-  for (const ContactPatch& patch : contact.patches) {
-    add_patch(s, patch.normal_force_N, patch.area_m2, patch.max_pressure_Pa, patch.y_cop_rail_m, weighted_y);
-    auto& profile = s.profiles.emplace_back();
-    for (const PatchStrip& strip : patch.strips) profile.push_back({strip.y_rail_m, strip.p0_Pa});
-  }
-  finish(s, weighted_y);
-  return s;
+  return summarise_patches(
+      contact.patches, [](const ContactPatch& p) { return p.y_cop_rail_m; },
+      [](const PatchStrip& strip) { return strip.y_rail_m; });
 }
 
 double profile_pressure_at(const ContactSummary& summary, double y_m) noexcept {
