@@ -530,8 +530,10 @@ double stability_error_bound(const StabilityRow& row) noexcept {
     case ContactMethod::Mim1d:
     case ContactMethod::Bem2d:
       // near a jump of the contact point the wheel-rail patch set-up itself moves up to 16 % between 0.2 and
-      // 0.1 mm (bem2d against bem2d); elsewhere the resolved methods agree with the reference within 6 %
-      return row.scene == "wheelrail_jump_sweep" ? 0.20 : 0.06;
+      // 0.1 mm (bem2d against bem2d); on profiles measured with 1-10 um noise (smoothed or not) the patch edges
+      // follow the noise (MIM-1D 7 % in area at 10 um, two-point contact); elsewhere within 6 %
+      if (row.scene == "wheelrail_jump_sweep") return 0.20;
+      return row.scene == "wheelrail_noise" ? 0.10 : 0.06;
   }
   return kNaN;
 }
