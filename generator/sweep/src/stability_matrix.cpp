@@ -278,7 +278,7 @@ std::string wheelrail_case_name(const WheelRail& wr, double dy_m, const std::str
   double z = 0.0;
   wr.side->gap_minima(dy_m, 0.0, minima, z);
   char name[96];
-  std::snprintf(name, sizeof name, "%sdy=%.2fmm angle=%.0fdeg", prefix.c_str(), dy_m * 1e3,
+  std::snprintf(name, sizeof name, "%sdy=%.3fmm angle=%.0fdeg", prefix.c_str(), dy_m * 1e3,
                 minima.empty() ? 0.0 : minima.front().contact_angle_rad * 180.0 / M_PI);
   return name;
 }
