@@ -189,9 +189,11 @@ Command add_bench_command(CLI::App& parent) {
     bench->add_flag("--json", *json, "print one JSON object (SI units; read by scripts/speed_vs_contact.py)");
   const Command lookup = add_bench_lookup_subcommand(*app);
   const Command accuracy = add_bench_accuracy_subcommand(*app);
-  return {app, [seconds, solver, wheelrail, repetitions, json, lookup, accuracy] {
+  const Command stability = add_bench_stability_subcommand(*app);
+  return {app, [seconds, solver, wheelrail, repetitions, json, lookup, accuracy, stability] {
             if (lookup.app->parsed()) return lookup.run();
             if (accuracy.app->parsed()) return accuracy.run();
+            if (stability.app->parsed()) return stability.run();
             if (solver->parsed()) return run_bench_solver(*seconds, *json);
             if (wheelrail->parsed()) return run_bench_wheelrail(*seconds, *json);
             return run_bench_generate(*repetitions, *json);

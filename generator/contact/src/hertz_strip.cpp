@@ -19,11 +19,13 @@ struct DeepestPoint {
 };
 
 // Lateral curvature rule (README "Method ladder", hertz): the local B at the contact point when B >= A/20;
-// otherwise (negative, i.e. concave, or nearly flat) the patch-mean lateral curvature, floored at A/20.
+// otherwise (negative, i.e. concave, or nearly flat) the patch-mean lateral curvature, floored at A/20 unless the
+// gap is convex across the patch (local B > 0 and the mean at least half of it: then the mean, unfloored).
 constexpr double kCurvatureRatioLimit = 20.0;       // B >= A/20: CONTACT's R_y <= 20 R_x rule
 constexpr double kMeanCurvatureHalfSpan_m = 10e-3;  // CONTACT clips the patch to +-10 mm around the point
 constexpr int kMeanCurvatureIterations = 20;        // fixed point on (delta, B) for a prescribed load
 constexpr double kMeanCurvatureTolerance = 1e-9;    // relative change of B that ends it
+constexpr double kConvexMeanShare = 0.5;            // patch-mean B >= this x local B > 0: convex across the patch
 
 // dh/dy at node i: central difference (one-sided at the ends).
 double gap_slope(const GapProfile& gap, std::size_t i) {
@@ -49,7 +51,12 @@ double lateral_curvature(const GapProfile& gap, const DeepestPoint& point, doubl
   const double floor = point.A / kCurvatureRatioLimit, local = gap.B_per_m[point.k];
   if (local >= floor) return local;
   const double mean = mean_lateral_curvature(gap, point.k, depth_m);
-  return std::isfinite(mean) ? std::max(mean, floor) : floor;
+  if (!std::isfinite(mean)) return floor;
+  // Convex across the patch (the local curvature positive, the patch mean at least half of it): the curvature is
+  // the gap's own and needs no floor. Flooring it gave a wrong ellipse with status converged on a laterally
+  // elongated Hertzian gap (B < A/20, a/b < 1/7; stability_matrix_test). The floor is for concave gaps.
+  if (local > 0.0 && mean >= kConvexMeanShare * local) return mean;
+  return std::max(mean, floor);
 }
 
 DeepestPoint deepest_point(const GapProfile& gap) {
