@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "ctab/contact/mim1d_options.hpp"
@@ -32,11 +33,17 @@ strip_samples = 16
 
 const double kTolerance = Mim1dOptions{}.tolerance;  // the solver's relative tolerance [-]
 
+// The fine config with [solver] warm_start set (true) or left at its default (false).
+TableConfig fine_config(bool warm_start) {
+  std::string text = kFineConfig;
+  if (warm_start) text.insert(text.find("[solver]\n") + 9, "warm_start = true\n");
+  return parse_table_config(text, "fine.toml");
+}
+
 Table fine_table(int threads, bool warm_start) {
   GeneratorInfo info;
   info.threads = threads;
-  info.warm_start = warm_start;
-  return generate_table(parse_table_config(kFineConfig, "fine.toml"), info);
+  return generate_table(fine_config(warm_start), info);
 }
 
 const Table& warm_table(int threads) {
@@ -48,6 +55,23 @@ double largest(const std::vector<double>& v) {
   double m = 0.0;
   for (const double x : v) m = std::max(m, std::abs(x));
   return m;
+}
+
+TEST(WarmStart, ConfigKeyDefaultsToColdAndRejectsNonBooleans) {
+  EXPECT_FALSE(fine_config(false).warm_start);
+  EXPECT_TRUE(fine_config(true).warm_start);
+  try {
+    (void)
+        parse_table_config("[solver]\nwarm_start = \"yes\"\n[axes]\nlateral_displacement_m = { start = 0, stop = 1e-3, "
+                           "step = 1e-3 }\nvertical_load_N = 78.5e3\n",
+                           "bad.toml");
+    FAIL() << "a string accepted for solver.warm_start";
+  } catch (const ctab::gen::InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bad.toml:2"), std::string::npos) << what;
+    EXPECT_NE(what.find("solver.warm_start"), std::string::npos) << what;
+    EXPECT_NE(what.find("true or false"), std::string::npos) << what;
+  }
 }
 
 TEST(WarmStart, PreviousRowsFollowTheWorkUnits) {
@@ -80,8 +104,9 @@ TEST(WarmStart, TableIsBitIdenticalAtOneAndTwoThreads) {
   EXPECT_TRUE(one.status == two.status);
   EXPECT_TRUE(one.roll_rad == two.roll_rad);
   EXPECT_TRUE(one.patch.present == two.patch.present);
-  for (auto field : {&ctab::tables::PatchQuantities::normal_force_N, &ctab::tables::PatchQuantities::max_pressure_Pa, &ctab::tables::PatchQuantities::approach_m,
-                     &ctab::tables::PatchQuantities::area_m2, &ctab::tables::PatchQuantities::y_rail_m, &ctab::tables::PatchQuantities::strip_half_length_m,
+  for (auto field : {&ctab::tables::PatchQuantities::normal_force_N, &ctab::tables::PatchQuantities::max_pressure_Pa,
+                     &ctab::tables::PatchQuantities::approach_m, &ctab::tables::PatchQuantities::area_m2,
+                     &ctab::tables::PatchQuantities::y_rail_m, &ctab::tables::PatchQuantities::strip_half_length_m,
                      &ctab::tables::PatchQuantities::strip_peak_pressure_Pa})
     EXPECT_TRUE(one.patch.*field == two.patch.*field);  // bit for bit (== on doubles, no tolerance)
 }
@@ -103,9 +128,11 @@ TEST(WarmStart, TableAgreesWithColdStartWithinTheSolverTolerance) {
   std::printf("warm vs cold: worst normal force difference %.2e of the load\n", worst_force);
   // Geometry and pressure fields: within 1000 x tol of the field's largest value (strip lengths of the lightly
   // loaded edge strips carry the loads' tolerance as sqrt; measured 2.5e-11 on the default table).
-  for (auto field : {&ctab::tables::PatchQuantities::max_pressure_Pa, &ctab::tables::PatchQuantities::approach_m, &ctab::tables::PatchQuantities::area_m2,
-                     &ctab::tables::PatchQuantities::y_rail_m, &ctab::tables::PatchQuantities::y_cop_rail_m, &ctab::tables::PatchQuantities::contact_angle_rad,
-                     &ctab::tables::PatchQuantities::strip_half_length_m, &ctab::tables::PatchQuantities::strip_peak_pressure_Pa}) {
+  for (auto field :
+       {&ctab::tables::PatchQuantities::max_pressure_Pa, &ctab::tables::PatchQuantities::approach_m,
+        &ctab::tables::PatchQuantities::area_m2, &ctab::tables::PatchQuantities::y_rail_m,
+        &ctab::tables::PatchQuantities::y_cop_rail_m, &ctab::tables::PatchQuantities::contact_angle_rad,
+        &ctab::tables::PatchQuantities::strip_half_length_m, &ctab::tables::PatchQuantities::strip_peak_pressure_Pa}) {
     const std::vector<double>& w = warm.patch.*field;
     const std::vector<double>& c = cold.patch.*field;
     const double scale = largest(c);
@@ -119,7 +146,7 @@ TEST(WarmStart, TableAgreesWithColdStartWithinTheSolverTolerance) {
 // Along one chain of 0.01 mm steps the warm solves agree with cold ones within the tolerance and need fewer
 // MIM-1D iterations (the point of the warm start).
 TEST(WarmStart, ChainNeedsFewerIterationsThanColdStarts) {
-  const SweepSetup setup = make_sweep_setup(parse_table_config(kFineConfig, "fine.toml"));
+  const SweepSetup setup = make_sweep_setup(fine_config(true));
   WheelContactWorkspace workspace;
   int warm_iterations = 0, cold_iterations = 0;
   for (const double start_m : {-0.5e-3, 1.0e-3, 3.0e-3, 4.6e-3, 5.5e-3}) {
@@ -148,7 +175,7 @@ TEST(WarmStart, ChainNeedsFewerIterationsThanColdStarts) {
 
 TEST(WarmStart, SolveTableCaseReproducesWarmEntries) {
   const Table& table = warm_table(1);
-  const SweepSetup setup = make_sweep_setup(parse_table_config(kFineConfig, "fine.toml"));
+  const SweepSetup setup = make_sweep_setup(fine_config(true));
   for (const std::size_t i_dy : {std::size_t{5}, std::size_t{7}, std::size_t{8}, std::size_t{115}}) {
     const CaseSolution solution = solve_table_case(setup, table.lateral_displacement_m[i_dy], 100e3);
     for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel) {
@@ -160,6 +187,35 @@ TEST(WarmStart, SolveTableCaseReproducesWarmEntries) {
         EXPECT_EQ(one.patch.max_pressure_Pa[k], table.patch.max_pressure_Pa[k]) << i_dy << " wheel " << wheel;
       }
     }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// Shards (`ctab generate --shard K/N`) and MPI work units are unions of whole units, so they solve the same chains
+// as one run: their rows, solved separately into one table, equal the single run bit for bit (mirrored or not).
+TEST(WarmStart, ShardsGiveTheSingleRunsTableBitForBit) {
+  for (const char* axis :
+       {"{ start = -1e-3, stop = 6e-3, step = 0.05e-3 }", "{ start = -2e-3, stop = 2e-3, step = 0.05e-3 }"}) {
+    const TableConfig config =
+        parse_table_config(std::string("[solver]\nwarm_start = true\n[axes]\nlateral_displacement_m = ") + axis +
+                               "\nvertical_load_N = 78.5e3\n[output]\nstrip_samples = 16\n",
+                           "shards.toml");
+    GeneratorInfo info;
+    info.threads = 2;
+    const Table single = generate_table(config, info);
+    const TableSweep sweep(config, info);
+    Table parts = sweep.empty_table();
+    const std::vector<std::vector<std::size_t>> units = sweep_units(sweep.n_dy(), sweep.mirrored());
+    for (std::size_t shard = 1; shard <= 3; ++shard) sweep.solve_rows(shard_rows(units, shard, 3), parts, nullptr);
+    sweep.finish(parts);
+    EXPECT_TRUE(parts.status == single.status) << axis;
+    EXPECT_TRUE(parts.roll_rad == single.roll_rad) << axis;
+    EXPECT_TRUE(parts.patch.normal_force_N == single.patch.normal_force_N) << axis;
+    EXPECT_TRUE(parts.patch.max_pressure_Pa == single.patch.max_pressure_Pa) << axis;
+    EXPECT_TRUE(parts.patch.strip_half_length_m == single.patch.strip_half_length_m) << axis;
   }
 }
 

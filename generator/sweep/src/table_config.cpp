@@ -121,6 +121,13 @@ class Reader {
     return static_cast<std::size_t>(value);
   }
 
+  bool flag(const std::string& table, const std::string& key, bool fallback) const {
+    const toml::node* node = find(table, key);
+    if (!node) return fallback;
+    if (const auto v = node->value<bool>()) return *v;
+    fail(*node, table + "." + key, "expected true or false");
+  }
+
   std::string text(const std::string& table, const std::string& key, const std::string& fallback) const {
     const toml::node* node = find(table, key);
     if (!node) return fallback;
@@ -232,6 +239,7 @@ void read_solver(const Reader& r, TableConfig& c) {
   c.method = *parsed;
   c.strip_width_m = r.number_in("solver", "strip_width_m", c.strip_width_m, kMinStripWidth_m, kMaxStripWidth_m,
                                 "a strip width in [1e-05, 0.005] m");
+  c.warm_start = r.flag("solver", "warm_start", c.warm_start);
 }
 
 void read_axes(const Reader& r, TableConfig& c) {
@@ -319,7 +327,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
       {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
        {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
-       {"solver", {"mode", "method", "strip_width_m"}},
+       {"solver", {"mode", "method", "strip_width_m", "warm_start"}},
        {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;

@@ -109,6 +109,7 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.load_kind = config.load_kind;
   setup.dy_axis_m = config.lateral_displacement_m;
   setup.mirrored = !setup.dy_axis_m.empty() && symmetric_axis(setup.dy_axis_m);
+  setup.warm_start = config.warm_start && config.method == NormalMethod::Mim1d;
   (void)StripKernel::instance();  // process-wide tables are built here, not inside a parallel region
   HertzCoefficients warm_up;
   (void)hertz_coefficients_tabulated(1.0, 2.0, warm_up);
@@ -396,7 +397,7 @@ void solve_rolls(const SweepSetup& setup, const SweepPlan& plan, const std::vect
   std::vector<std::size_t> solved;
   for (std::size_t k = 0; k < rows.size(); ++k)
     if (source[k] == kSolveRoll) solved.push_back(k);
-  // schedule(dynamic): the roll iteration costs more where the contact jumps.
+      // schedule(dynamic): the roll iteration costs more where the contact jumps.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
   for (std::size_t j = 0; j < solved.size(); ++j) rolls[solved[j]] = solve_case_roll(setup, plan.dy_m[rows[solved[j]]]);
   for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -444,7 +445,7 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, con
   std::atomic<std::size_t> done{0};
   auto work = [&] {
     solve_rolls(setup, plan, rows, rolls);
-      // schedule(dynamic): flange cases cost several times tread cases.
+    // schedule(dynamic): flange cases cost several times tread cases.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
     for (std::size_t task = 0; task < tasks; ++task) {
       const std::size_t side = task / side_tasks, rest = task % side_tasks;
@@ -453,8 +454,8 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, con
       WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
       Mim1dWarmStart warm;  // the chain's first row starts cold
       for (const std::size_t k : chain) {
-        results[side * row_cases + k * n_second + i_second] = solve_case_wheel(
-            setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace, &warm);
+        results[side * row_cases + k * n_second + i_second] =
+            solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace, &warm);
         done.fetch_add(1, std::memory_order_relaxed);
       }
     }
@@ -554,9 +555,7 @@ struct TableSweep::Impl {
 };
 
 TableSweep::TableSweep(const TableConfig& config, const GeneratorInfo& info)
-    : impl_(std::make_unique<Impl>(Impl{config, make_sweep_setup(config), make_plan(config, info), info})) {
-  impl_->setup.warm_start = info.warm_start;
-}
+    : impl_(std::make_unique<Impl>(Impl{config, make_sweep_setup(config), make_plan(config, info), info})) {}
 TableSweep::~TableSweep() = default;
 TableSweep::TableSweep(TableSweep&&) noexcept = default;
 

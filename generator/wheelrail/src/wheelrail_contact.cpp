@@ -605,8 +605,7 @@ class WheelCase {
     const PatchProblem* main = ws_.used > 0 ? &ws_.pool[0] : nullptr;
     if (is_success(status) && main != nullptr && main->solver && options_.method == NormalMethod::Mim1d)
       main->solver->save_warm_start(main->solution, *warm_);
-    else
-      warm_->clear();
+    else warm_->clear();
   }
 
   WheelContact finish(SolveStatus status, std::string detail = {}) {

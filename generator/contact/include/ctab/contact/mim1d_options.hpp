@@ -35,9 +35,9 @@ struct Mim1dOptions {
 //! strip_grid.hpp) and the approach beyond the gap's deepest point. Only the start changes: the solve converges to
 //! the same tolerance, so the result agrees with a cold start within Mim1dOptions::tolerance.
 struct Mim1dWarmStart {
-  long first_strip = 0;          //!< strip index k of loads_N[0]
-  std::vector<double> loads_N;   //!< strip loads N_k [N] (0 for strips out of contact); empty: no warm start
-  double depth_m = 0.0;          //!< approach minus the deepest separation of the grid [m]
+  long first_strip = 0;         //!< strip index k of loads_N[0]
+  std::vector<double> loads_N;  //!< strip loads N_k [N] (0 for strips out of contact); empty: no warm start
+  double depth_m = 0.0;         //!< approach minus the deepest separation of the grid [m]
   [[nodiscard]] bool empty() const noexcept { return loads_N.empty(); }
   void clear() noexcept { loads_N.clear(); }
 };

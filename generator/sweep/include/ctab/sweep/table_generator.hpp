@@ -33,9 +33,6 @@ struct GeneratorInfo {
   std::string compiler = "unknown";     //!< compiler id and version (CTAB_COMPILER)
   std::string build_flags = "unknown";  //!< build type and flags (CTAB_BUILD_FLAGS)
   int threads = 1;                      //!< OpenMP threads for the sweep
-  //! Warm start (README "Speed"): each MIM-1D solve starts from its neighbour in dy, in fixed chains (see
-  //! warm_start_previous_rows); false: every case starts cold. Either way the table does not depend on threads.
-  bool warm_start = true;
 };
 
 //! Everything a table case needs, built once from a config (serial; may throw InputError). Movable: the
@@ -50,10 +47,11 @@ struct SweepSetup {
   ContactMode mode = ContactMode::Wheelset;
   LoadKind load_kind = LoadKind::VerticalForce;
   //! The config's lateral axis [m], whether the sweep is mirrored (one side solved) and whether its solves are
-  //! warm-started, so that solve_table_case reproduces a table entry (it replays the entry's warm-start chain).
+  //! warm-started (TableConfig::warm_start), so that solve_table_case reproduces a table entry (it replays the
+  //! entry's warm-start chain).
   std::vector<double> dy_axis_m;
   bool mirrored = false;
-  bool warm_start = true;
+  bool warm_start = false;
 };
 
 //! An InputError of make_sweep_setup that also tells which config key was wrong and why, so that a caller whose
