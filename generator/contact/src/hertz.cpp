@@ -8,6 +8,9 @@
 
 #include "ctab/contact/elliptic.hpp"
 #include "ctab/contact/root_finding.hpp"
+#ifndef CTAB_RUNTIME_CONTACT_TABLES
+#include "contact_tables.inc"  // generated at build time by contact_tables_gen (generator/CMakeLists.txt)
+#endif
 
 namespace ctab::gen {
 
@@ -79,66 +82,76 @@ bool hertz_coefficients(double A_per_m, double B_per_m, HertzCoefficients& out) 
 
 namespace {
 
-// m, n, r against x = ln(B/A), with slopes by central differences of the exact solution (h = 1e-4).
-class CoefficientTable {
- public:
-  static constexpr double kHalfRange = 12.0, kNodesPerUnit = 64.0;
-  CoefficientTable() {
-    const auto count = static_cast<std::size_t>(2 * kHalfRange * kNodesPerUnit) + 1;
-    values_.resize(count);
-    slopes_.resize(count);
-    // Nodes from the circle outwards (x = 0 is a circle), each inversion bracketed by its neighbour's solution.
-    const auto centre = static_cast<std::size_t>(kHalfRange * kNodesPerUnit);
-    for (const int direction : {+1, -1}) {
-      double hint = std::numeric_limits<double>::quiet_NaN();
-      for (std::size_t k = centre;; k += static_cast<std::size_t>(direction)) {
-        values_[k] = at(-kHalfRange + static_cast<double>(k) / kNodesPerUnit, hint);
-        if (k == 0 || k + 1 == count) break;
-      }
-    }
-    // Slopes by the fourth-order 5-point stencil on the nodes (one-sided near the ends).
-    const double h = 1.0 / kNodesPerUnit;
-    for (std::size_t k = 0; k < count; ++k)
-      for (std::size_t c = 0; c < 3; ++c) {
-        auto v = [&](std::size_t i) { return values_[i][c]; };
-        if (k >= 2 && k + 2 < count) slopes_[k][c] = (v(k - 2) - 8 * v(k - 1) + 8 * v(k + 1) - v(k + 2)) / (12 * h);
-        else if (k < 2)
-          slopes_[k][c] = (-25 * v(k) + 48 * v(k + 1) - 36 * v(k + 2) + 16 * v(k + 3) - 3 * v(k + 4)) / (12 * h);
-        else slopes_[k][c] = (25 * v(k) - 48 * v(k - 1) + 36 * v(k - 2) - 16 * v(k - 3) + 3 * v(k - 4)) / (12 * h);
-      }
-  }
-  bool lookup(double x, HertzCoefficients& out) const {
-    if (!(std::abs(x) < kHalfRange)) return false;
-    const double u = (x + kHalfRange) * kNodesPerUnit;
-    const auto k = std::min(static_cast<std::size_t>(u), values_.size() - 2);
-    const double t = u - static_cast<double>(k), h = 1.0 / kNodesPerUnit;
-    const double t2 = t * t, t3 = t2 * t;
-    std::array<double, 3> v{};
-    for (std::size_t c = 0; c < 3; ++c)
-      v[c] = (2 * t3 - 3 * t2 + 1) * values_[k][c] + (t3 - 2 * t2 + t) * h * slopes_[k][c] +
-             (-2 * t3 + 3 * t2) * values_[k + 1][c] + (t3 - t2) * h * slopes_[k + 1][c];
-    out = {v[0], v[1], v[2]};
-    return true;
-  }
+constexpr double kHalfRange = 12.0, kNodesPerUnit = 64.0;  // nodes of the coefficient table in x = ln(B/A)
+constexpr std::size_t kNodeCount = static_cast<std::size_t>(2 * kHalfRange * kNodesPerUnit) + 1;
+static_assert(kNodeCount == kHertzTableNodes);
 
- private:
-  static std::array<double, 3> at(double x, double& log_hint) {
-    HertzCoefficients c;
-    (void)coefficients_from_ratio(1.0, std::exp(x), log_hint, c, &log_hint);
-    return {c.m, c.n, c.r};
-  }
-  std::vector<std::array<double, 3>> values_, slopes_;
-};
+std::array<double, 3> coefficients_at(double x, double& log_hint) {
+  HertzCoefficients c;
+  (void)coefficients_from_ratio(1.0, std::exp(x), log_hint, c, &log_hint);
+  return {c.m, c.n, c.r};
+}
+
+// The table in use: compiled in (contact_tables_gen), or computed once per process in a build without it.
+const HertzTableNode* table_in_use() {
+#ifndef CTAB_RUNTIME_CONTACT_TABLES
+  return generated::kHertzTable.data();
+#else
+  static const std::vector<HertzTableNode> table = build_hertz_table();
+  return table.data();
+#endif
+}
+
+// Cubic Hermite in x between the nodes; false outside |x| < kHalfRange.
+bool table_lookup(double x, HertzCoefficients& out) {
+  if (!(std::abs(x) < kHalfRange)) return false;
+  const HertzTableNode* nodes = table_in_use();
+  const double u = (x + kHalfRange) * kNodesPerUnit;
+  const auto k = std::min(static_cast<std::size_t>(u), kNodeCount - 2);
+  const double t = u - static_cast<double>(k), h = 1.0 / kNodesPerUnit;
+  const double t2 = t * t, t3 = t2 * t;
+  std::array<double, 3> v{};
+  for (std::size_t c = 0; c < 3; ++c)
+    v[c] = (2 * t3 - 3 * t2 + 1) * nodes[k].value[c] + (t3 - 2 * t2 + t) * h * nodes[k].slope[c] +
+           (-2 * t3 + 3 * t2) * nodes[k + 1].value[c] + (t3 - t2) * h * nodes[k + 1].slope[c];
+  out = {v[0], v[1], v[2]};
+  return true;
+}
 
 }  // namespace
+
+std::vector<HertzTableNode> build_hertz_table() {
+  std::vector<HertzTableNode> nodes(kNodeCount);
+  // Nodes from the circle outwards (x = 0 is a circle), each inversion bracketed by its neighbour's solution.
+  const auto centre = static_cast<std::size_t>(kHalfRange * kNodesPerUnit);
+  for (const int direction : {+1, -1}) {
+    double hint = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t k = centre;; k += static_cast<std::size_t>(direction)) {
+      nodes[k].value = coefficients_at(-kHalfRange + static_cast<double>(k) / kNodesPerUnit, hint);
+      if (k == 0 || k + 1 == kNodeCount) break;
+    }
+  }
+  // Slopes by the fourth-order 5-point stencil on the nodes (one-sided near the ends).
+  const double h = 1.0 / kNodesPerUnit;
+  for (std::size_t k = 0; k < kNodeCount; ++k)
+    for (std::size_t c = 0; c < 3; ++c) {
+      auto v = [&](std::size_t i) { return nodes[i].value[c]; };
+      double& slope = nodes[k].slope[c];
+      if (k >= 2 && k + 2 < kNodeCount) slope = (v(k - 2) - 8 * v(k - 1) + 8 * v(k + 1) - v(k + 2)) / (12 * h);
+      else if (k < 2) slope = (-25 * v(k) + 48 * v(k + 1) - 36 * v(k + 2) + 16 * v(k + 3) - 3 * v(k + 4)) / (12 * h);
+      else slope = (25 * v(k) - 48 * v(k - 1) + 36 * v(k - 2) - 16 * v(k - 3) + 3 * v(k - 4)) / (12 * h);
+    }
+  return nodes;
+}
+
+const HertzTableNode* hertz_table() { return table_in_use(); }
 
 bool hertz_coefficients_tabulated(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept {
   if (!(std::isfinite(A_per_m) && std::isfinite(B_per_m) && A_per_m > 0.0 && B_per_m > 0.0)) {
     out = HertzCoefficients{};
     return false;
   }
-  static const CoefficientTable table;
-  if (table.lookup(std::log(B_per_m / A_per_m), out)) return true;
+  if (table_lookup(std::log(B_per_m / A_per_m), out)) return true;
   return hertz_coefficients(A_per_m, B_per_m, out);
 }
 

@@ -7,6 +7,9 @@
 #include <numbers>
 
 #include "ctab/contact/elliptic.hpp"
+#ifndef CTAB_RUNTIME_CONTACT_TABLES
+#include "contact_tables.inc"  // generated at build time by contact_tables_gen (generator/CMakeLists.txt)
+#endif
 
 namespace ctab::gen {
 
@@ -15,6 +18,7 @@ namespace {
 constexpr int kIntervalsPerOctave = 1 << StripKernel::kMantissaBits;
 constexpr int kOctaves = StripKernel::kMaxExponent - StripKernel::kMinExponent;
 constexpr std::size_t kIntervalCount = static_cast<std::size_t>(kOctaves) * kIntervalsPerOctave;
+static_assert(kIntervalCount == StripKernel::kIntervalCount);
 constexpr double kTableMin = StripKernel::kTableMin;
 constexpr double kTableMax = StripKernel::kTableMax;
 static_assert(kTableMin == 0x1p-40 && StripKernel::kMinExponent == -40 && StripKernel::kMaxExponent == 40);
@@ -40,7 +44,8 @@ double StripKernel::exact_slope(double t) noexcept {
   return d / std::sqrt(1.0 + t * t);
 }
 
-StripKernel::StripKernel() : intervals_(kIntervalCount) {
+std::vector<StripKernel::Interval> StripKernel::build_intervals() {
+  std::vector<Interval> intervals(kIntervalCount);
   // Cumulative integration of the exact slope, 4-point Gauss-Legendre per interval.
   static constexpr std::array<double, 4> kGaussNodes = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
                                                         0.8611363115940526};
@@ -57,7 +62,7 @@ StripKernel::StripKernel() : intervals_(kIntervalCount) {
       integral += kGaussWeights[g] * exact_slope(t0 + 0.5 * width * (1.0 + kGaussNodes[g]));
     const double h1 = h0 + 0.5 * width * integral;
     const double d1 = exact_slope(t1);
-    Interval& interval = intervals_[i];
+    Interval& interval = intervals[i];
     interval.t0 = t0;
     interval.inverse_width = 1.0 / width;
     interval.c0 = h0;
@@ -68,7 +73,14 @@ StripKernel::StripKernel() : intervals_(kIntervalCount) {
     h0 = h1;
     d0 = d1;
   }
+  return intervals;
 }
+
+#ifndef CTAB_RUNTIME_CONTACT_TABLES
+StripKernel::StripKernel() : intervals_(generated::kStripKernelIntervals.data()) {}
+#else
+StripKernel::StripKernel() : storage_(build_intervals()), intervals_(storage_.data()) {}
+#endif
 
 const StripKernel& StripKernel::instance() {
   static const StripKernel kernel;

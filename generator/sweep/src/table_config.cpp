@@ -39,6 +39,7 @@ mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "whe
 method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (README "Method ladder")
 strip_width_m = 0.2e-3
 reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
+warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; README "Speed")
 
 [axes]
 lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.1e-3 }
@@ -120,6 +121,13 @@ class Reader {
       fail_at(line(table, key), table + "." + key,
               "expected an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
     return static_cast<std::size_t>(value);
+  }
+
+  bool flag(const std::string& table, const std::string& key, bool fallback) const {
+    const toml::node* node = find(table, key);
+    if (!node) return fallback;
+    if (const auto v = node->value<bool>()) return *v;
+    fail(*node, table + "." + key, "expected true or false");
   }
 
   std::string text(const std::string& table, const std::string& key, const std::string& fallback) const {
@@ -239,6 +247,7 @@ void read_solver(const Reader& r, TableConfig& c) {
            "expected \"deepest\" or \"interpenetration-centre\", got \"" + r.text("solver", "reference_point", "") +
                "\"");
   c.reference_at_interpenetration_centre = *centre;
+  c.warm_start = r.flag("solver", "warm_start", c.warm_start);
 }
 
 void read_axes(const Reader& r, TableConfig& c) {
@@ -326,7 +335,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
       {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
        {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
-       {"solver", {"mode", "method", "strip_width_m", "reference_point"}},
+       {"solver", {"mode", "method", "strip_width_m", "reference_point", "warm_start"}},
        {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;

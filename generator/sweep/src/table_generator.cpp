@@ -19,6 +19,7 @@
 #include "ctab/contact/strip_kernel.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/io/sha256.hpp"
+#include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/slot_assignment.hpp"
 
 namespace ctab::gen {
@@ -75,6 +76,12 @@ ProfileTable load_checked(const TableConfig& config, const std::string& spec, Pr
   }
 }
 
+// One wheel and one rail profile for both sides and a symmetric dy axis: the left wheel at dy is the right at -dy.
+bool symmetric_axis(const std::vector<double>& dy_m) {
+  const double span = std::max(std::abs(dy_m.front()), std::abs(dy_m.back()));
+  return std::abs(dy_m.front() + dy_m.back()) <= 1e-9 * span + 1e-15;
+}
+
 void check_strip_width(const TableConfig& config) {
   if (config.strip_width_m >= kMinStripWidth_m && config.strip_width_m <= kMaxStripWidth_m) return;
   std::ostringstream range;
@@ -101,6 +108,9 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.options.reference_at_interpenetration_centre = config.reference_at_interpenetration_centre;
   setup.mode = config.mode;
   setup.load_kind = config.load_kind;
+  setup.dy_axis_m = config.lateral_displacement_m;
+  setup.mirrored = !setup.dy_axis_m.empty() && symmetric_axis(setup.dy_axis_m);
+  setup.warm_start = config.warm_start && config.method == NormalMethod::Mim1d;
   (void)StripKernel::instance();  // process-wide tables are built here, not inside a parallel region
   HertzCoefficients warm_up;
   (void)hertz_coefficients_tabulated(1.0, 2.0, warm_up);
@@ -120,13 +130,17 @@ CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m) noexcept {
 }
 
 CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
-                           double load_value, WheelContactWorkspace& workspace) noexcept {
+                           double load_value, WheelContactWorkspace& workspace, Mim1dWarmStart* warm_start) noexcept {
   const double shift = wheel == 1 ? -dy_m : dy_m, angle = wheel == 1 ? -roll.roll_rad : roll.roll_rad;
   CaseWheel out;
   try {
-    out.contact = solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
-                                      setup.options, workspace);
+    out.contact = warm_start == nullptr
+                      ? solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                            setup.options, workspace)
+                      : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                            setup.options, workspace, *warm_start);
     if (!roll.converged) {
+      if (warm_start != nullptr) warm_start->clear();
       out.contact.status = SolveStatus::MaxIterations;
       out.contact.detail = "wheelset roll did not converge: " + roll.detail;
       out.contact.patches.clear();
@@ -134,9 +148,47 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
   } catch (...) {
     out = CaseWheel{};
     out.exception = true;
+    if (warm_start != nullptr) warm_start->clear();
   }
   return out;
 }
+
+std::vector<std::size_t> warm_start_previous_rows(std::size_t n_dy, bool mirrored) {
+  std::vector<std::size_t> previous(n_dy, kColdStart);
+  for (const std::vector<std::size_t>& unit : sweep_units(n_dy, mirrored))
+    for (std::size_t j = 1; j < unit.size(); ++j)
+      if (unit[j] == unit[j - 1] + 1) previous[unit[j]] = unit[j - 1];
+  return previous;
+}
+
+namespace {
+
+// The row a wheel's solve is computed at: a mirrored sweep solves the left wheel as the right wheel at -dy.
+struct SolvedRow {
+  std::size_t side = 0, row = 0;
+};
+SolvedRow solved_row(const SweepSetup& setup, std::size_t wheel, std::size_t row) {
+  if (setup.mirrored && wheel == 1) return {0, setup.dy_axis_m.size() - 1 - row};
+  return {wheel, row};
+}
+
+// A wheel of the case at axis row `row` as the sweep solves it: its warm-start chain replayed from its cold row.
+CaseWheel replay_chain(const SweepSetup& setup, std::size_t wheel, std::size_t row, const CaseRoll& roll,
+                       double load_value, WheelContactWorkspace& workspace) {
+  const SolvedRow target = solved_row(setup, wheel, row);
+  const std::vector<std::size_t> previous = warm_start_previous_rows(setup.dy_axis_m.size(), setup.mirrored);
+  std::vector<std::size_t> chain{target.row};
+  while (previous[chain.back()] != kColdStart) chain.push_back(previous[chain.back()]);
+  Mim1dWarmStart warm;
+  for (std::size_t k = chain.size() - 1; k > 0; --k) {
+    const double dy = setup.dy_axis_m[chain[k]];
+    (void)solve_case_wheel(setup, target.side, dy, solve_case_roll(setup, dy), load_value, workspace, &warm);
+  }
+  // The target itself in the wheel's own frame (bit-identical to the solved row's frame, roll_mirror_test).
+  return solve_case_wheel(setup, wheel, setup.dy_axis_m[row], roll, load_value, workspace, &warm);
+}
+
+}  // namespace
 
 CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value, WheelSelection wheels) {
   CaseSolution solution;
@@ -145,9 +197,15 @@ CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_
   solution.roll = solve_case_roll(setup, dy_m);
   solution.solved = wheels;
   WheelContactWorkspace workspace;
+  // A shift on the axis is solved as the sweep solves it (warm-started along its chain), any other cold.
+  const auto on_axis = std::find(setup.dy_axis_m.begin(), setup.dy_axis_m.end(), dy_m);
+  const bool replay = setup.warm_start && on_axis != setup.dy_axis_m.end();
   for (std::size_t wheel = 0; wheel < tables::kWheels; ++wheel)
     if (wheels[wheel])
-      solution.wheels[wheel] = solve_case_wheel(setup, wheel, dy_m, solution.roll, load_value, workspace);
+      solution.wheels[wheel] =
+          replay ? replay_chain(setup, wheel, static_cast<std::size_t>(on_axis - setup.dy_axis_m.begin()),
+                                solution.roll, load_value, workspace)
+                 : solve_case_wheel(setup, wheel, dy_m, solution.roll, load_value, workspace);
   if (wheels == kBothWheels)
     solution.rolling_radius_difference_m = solution.wheels[0].contact.rigid_contact.rolling_radius_m -
                                            solution.wheels[1].contact.rigid_contact.rolling_radius_m;
@@ -280,8 +338,7 @@ SweepPlan make_plan(const TableConfig& config, const GeneratorInfo& info) {
   SweepPlan plan;
   plan.dy_m = config.lateral_displacement_m;
   plan.load_values = config.load_values;
-  const double span = std::max(std::abs(plan.dy_m.front()), std::abs(plan.dy_m.back()));
-  plan.mirrored = std::abs(plan.dy_m.front() + plan.dy_m.back()) <= 1e-9 * span + 1e-15;
+  plan.mirrored = symmetric_axis(plan.dy_m);
   plan.sides = plan.mirrored ? 1 : 2;
   plan.threads = std::max(1, info.threads);
   return plan;
@@ -341,7 +398,7 @@ void solve_rolls(const SweepSetup& setup, const SweepPlan& plan, const std::vect
   std::vector<std::size_t> solved;
   for (std::size_t k = 0; k < rows.size(); ++k)
     if (source[k] == kSolveRoll) solved.push_back(k);
-  // schedule(dynamic): the roll iteration costs more where the contact jumps.
+      // schedule(dynamic): the roll iteration costs more where the contact jumps.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
   for (std::size_t j = 0; j < solved.size(); ++j) rolls[solved[j]] = solve_case_roll(setup, plan.dy_m[rows[solved[j]]]);
   for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -351,13 +408,38 @@ void solve_rolls(const SweepSetup& setup, const SweepPlan& plan, const std::vect
   }
 }
 
-// Rolls (one per selected lateral shift) then every solved wheel of every selected case, each task writing only
-// its own slot. `rows` are lateral-shift indices; results are indexed (side, k, i_second) with k the position in
-// `rows`, rolls by k. A case's solve depends on nothing but its own inputs, so any subset gives the same values.
+// The warm-start chains among `rows` (lateral-shift indices): positions k in `rows`, each chain in solve order. A row
+// continues the chain of its warm_start_previous_rows row when that row is selected too (shards hold whole units,
+// so their chains are those of the full sweep); without warm start every row is a chain of its own.
+std::vector<std::vector<std::size_t>> warm_start_chains(const SweepSetup& setup, const SweepPlan& plan,
+                                                        const std::vector<std::size_t>& rows) {
+  const std::size_t n_dy = plan.dy_m.size();
+  std::vector<std::size_t> position(n_dy, kColdStart);
+  for (std::size_t k = 0; k < rows.size(); ++k) position[rows[k]] = k;
+  const std::vector<std::size_t> previous =
+      setup.warm_start ? warm_start_previous_rows(n_dy, plan.mirrored) : std::vector<std::size_t>(n_dy, kColdStart);
+  std::vector<std::size_t> next(n_dy, kColdStart);
+  for (const std::size_t row : rows)
+    if (previous[row] != kColdStart && position[previous[row]] != kColdStart) next[previous[row]] = row;
+  std::vector<std::vector<std::size_t>> chains;
+  for (const std::size_t row : rows) {
+    if (previous[row] != kColdStart && position[previous[row]] != kColdStart) continue;  // not a chain's start
+    chains.emplace_back();
+    for (std::size_t r = row; r != kColdStart; r = next[r]) chains.back().push_back(position[r]);
+  }
+  return chains;
+}
+
+// Rolls (one per selected lateral shift) then every solved wheel of every selected case, each task one warm-start
+// chain of one side and one load, writing only its own slots. `rows` are lateral-shift indices; results are
+// indexed (side, k, i_second) with k the position in `rows`, rolls by k. A case's solve depends on nothing but its
+// own inputs and its chain, so any subset of whole chains gives the same values at any thread count.
 std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
                              std::vector<CaseRoll>& rolls, const ProgressCallback& progress) {
   const std::size_t n_rows = rows.size(), n_second = plan.load_values.size(), row_cases = n_rows * n_second;
   const std::size_t total = row_cases * plan.sides;
+  const std::vector<std::vector<std::size_t>> chains = warm_start_chains(setup, plan, rows);
+  const std::size_t side_tasks = chains.size() * n_second, tasks = side_tasks * plan.sides;
   rolls = std::vector<CaseRoll>(n_rows);
   std::vector<CaseWheel> results(total);
   std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(plan.threads));  // one per thread
@@ -366,13 +448,17 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, con
     solve_rolls(setup, plan, rows, rolls);
     // schedule(dynamic): flange cases cost several times tread cases.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
-    for (std::size_t task = 0; task < total; ++task) {
-      const std::size_t side = task / row_cases, rest = task % row_cases;
-      const std::size_t k = rest / n_second, i_second = rest % n_second;
+    for (std::size_t task = 0; task < tasks; ++task) {
+      const std::size_t side = task / side_tasks, rest = task % side_tasks;
+      const std::vector<std::size_t>& chain = chains[rest / n_second];
+      const std::size_t i_second = rest % n_second;
       WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
-      results[task] =
-          solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace);
-      done.fetch_add(1, std::memory_order_relaxed);
+      Mim1dWarmStart warm;  // the chain's first row starts cold
+      for (const std::size_t k : chain) {
+        results[side * row_cases + k * n_second + i_second] =
+            solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace, &warm);
+        done.fetch_add(1, std::memory_order_relaxed);
+      }
     }
   };
   run_with_progress(work, done, total, progress);

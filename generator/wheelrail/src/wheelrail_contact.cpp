@@ -272,9 +272,9 @@ namespace {
 class WheelCase {
  public:
   WheelCase(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load, double load_value,
-            const WheelRailOptions& options, WheelContactWorkspace::Impl& workspace)
+            const WheelRailOptions& options, WheelContactWorkspace::Impl& workspace, Mim1dWarmStart* warm_start)
       : side_(side), dy_(dy_m), roll_(roll_rad), E_star_(E_star_Pa), load_(load), value_(load_value), options_(options),
-        ws_(workspace), builder_(side, dy_m, roll_rad, 0.0) {}
+        ws_(workspace), warm_(warm_start), builder_(side, dy_m, roll_rad, 0.0) {}
 
   WheelContact solve() {
     ws_.used = 0;
@@ -363,8 +363,14 @@ class WheelCase {
     } else {
       // Vertical load: exact while every strip pushes along the plane normal (strip_normal_angle, run_force).
       const double force = load_ == LoadKind::VerticalForce ? value_ / main.c : value_;
-      main.solution = options_.method == NormalMethod::Mim1d ? main.solver->solve_for_load(force)
-                                                             : solve_other_rung(main, Loading::normal_force(force));
+      if (options_.method != NormalMethod::Mim1d) {
+        main.solution = solve_other_rung(main, Loading::normal_force(force));
+      } else if (warm_ == nullptr) {
+        main.solution = main.solver->solve_for_load(force);
+      } else {  // from the neighbour's solution, then from this one (recentring, a wider window)
+        main.solution = main.solver->solve_for_load(force, *warm_);
+        main.solver->save_warm_start(main.solution, *warm_);
+      }
       result_.iterations += main.solution.iterations;
       result_.vertical_approach_m = main.solution.approach_m / main.c;
     }
@@ -593,7 +599,17 @@ class WheelCase {
         result_.near_misses.push_back(ws_.minima[k]);
   }
 
+  // The main patch's last solve as the next shift's warm start (cleared when this case failed).
+  void save_warm_start(SolveStatus status) {
+    if (warm_ == nullptr) return;
+    const PatchProblem* main = ws_.used > 0 ? &ws_.pool[0] : nullptr;
+    if (is_success(status) && main != nullptr && main->solver && options_.method == NormalMethod::Mim1d)
+      main->solver->save_warm_start(main->solution, *warm_);
+    else warm_->clear();
+  }
+
   WheelContact finish(SolveStatus status, std::string detail = {}) {
+    save_warm_start(status);
     result_.status = status;
     if (!is_success(status)) {
       result_.patches.clear();
@@ -610,6 +626,7 @@ class WheelCase {
   double value_;
   const WheelRailOptions& options_;
   WheelContactWorkspace::Impl& ws_;
+  Mim1dWarmStart* warm_;  // in/out, or null: cold
   PatchBuilder builder_;
   WheelContact result_;
   std::string detail_;  // why the case failed (empty while it has not)
@@ -620,7 +637,13 @@ class WheelCase {
 WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
                                  LoadKind load, double load_value, const WheelRailOptions& options,
                                  WheelContactWorkspace& workspace) {
-  return WheelCase(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace.impl()).solve();
+  return WheelCase(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace.impl(), nullptr).solve();
+}
+
+WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
+                                 LoadKind load, double load_value, const WheelRailOptions& options,
+                                 WheelContactWorkspace& workspace, Mim1dWarmStart& warm_start) {
+  return WheelCase(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace.impl(), &warm_start).solve();
 }
 
 }  // namespace ctab::gen

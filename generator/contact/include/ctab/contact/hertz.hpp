@@ -10,6 +10,10 @@
 //! semi-axis ratio (<= 1) and m_e = 1 - g^2 the elliptic parameter (CONTACT m_hertz.f90 form: no
 //! cancellation at small eccentricity); solved by a safeguarded root finder in log(1 - m_e).
 //! Checks: circle m = n = r = 1; B/A = 3: m = 1.4858, n = 0.7171 (tests/hertz_test.cpp).
+#include <array>
+#include <cstddef>
+#include <vector>
+
 #include "ctab/contact/solve_status.hpp"
 
 namespace ctab::gen {
@@ -25,9 +29,20 @@ struct HertzCoefficients {
 //! is not positive and finite.
 [[nodiscard]] bool hertz_coefficients(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept;
 
-//! The same from a table in x = ln(B/A) built once per process (cubic Hermite, 64 nodes per unit of x on
-//! |x| <= 12, relative error < 1e-10), exact outside that range. For loops over many strips.
+//! The same from a table in x = ln(B/A) (cubic Hermite, 64 nodes per unit of x on |x| <= 12, relative error
+//! < 1e-10), exact outside that range. For loops over many strips. The table is computed at build time
+//! (contact_tables_gen writes it as source, bit for bit what build_hertz_table() computes).
 [[nodiscard]] bool hertz_coefficients_tabulated(double A_per_m, double B_per_m, HertzCoefficients& out) noexcept;
+
+//! One node of that table: m, n, r at x = -12 + k/64 and their slopes d/dx (5-point stencil).
+struct HertzTableNode {
+  std::array<double, 3> value, slope;
+};
+inline constexpr std::size_t kHertzTableNodes = 24 * 64 + 1;
+//! The table computed now (tests; the build-time generator contact_tables_gen).
+[[nodiscard]] std::vector<HertzTableNode> build_hertz_table();
+//! The table in use (kHertzTableNodes nodes).
+[[nodiscard]] const HertzTableNode* hertz_table();
 
 //! A full Hertz solution.
 struct HertzContact {

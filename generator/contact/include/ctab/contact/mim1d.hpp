@@ -50,6 +50,13 @@ class Mim1dSolver {
   [[nodiscard]] NormalSolution solve_for_approach(double approach_m);
   //! Solve for a prescribed total normal force [N].
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N);
+  //! The same, started from `start` (a neighbouring gap's solution; empty: cold). Strips of `start` that carry
+  //! load and interpenetrate at its depth form the starting set; should the warm solve fail, the cold solve runs
+  //! (the iterations of both are counted). Converges to the same tolerance as the cold start.
+  [[nodiscard]] NormalSolution solve_for_load(double normal_force_N, const Mim1dWarmStart& start);
+  //! The solve that gave `solved` (the last one) as a warm start for a neighbouring gap; cleared unless it
+  //! succeeded with contact.
+  void save_warm_start(const NormalSolution& solved, Mim1dWarmStart& out) const;
 
   [[nodiscard]] const StripGrid& grid() const noexcept { return grid_; }
   //! True when this solver was set up for the same material and options (so reset() may reuse it).
@@ -104,6 +111,10 @@ class Mim1dSolver {
   bool take_step(InnerState& state, double next_approach);
   [[nodiscard]] NormalSolution solve_for_load_nested(double normal_force_N, int& iterations);
   void refresh_compliances(double approach_m);
+  //! Loads and active set from a warm start at approach h_min + start.depth_m; false when no strip of it applies.
+  bool load_warm_start(const Mim1dWarmStart& start, double& approach_m);
+  //! Strip index k of the grid's first strip (centre (k + 1/2) 2b).
+  [[nodiscard]] long first_strip_index() const noexcept;
   //! Approach of Hertz at the deepest strip for the given load (the paper's starting value) [m].
   [[nodiscard]] double hertz_start_approach(double normal_force_N) const;
   void update_lengths();
@@ -112,6 +123,9 @@ class Mim1dSolver {
   void build_matrices(MatrixKind kind, bool with_displacement);
   [[nodiscard]] double displacement_at(std::size_t strip) const;
   void initialise_zone(double approach_m);
+  //! basin_scratch_[i]: the deepest h of strip i's basin (between neighbouring local maxima of h); returns the
+  //! number of basins whose deepest point lies below approach_m.
+  std::size_t fill_basin_minima(double approach_m);
   void admit_strip(std::size_t strip, double penetration_m);
   [[nodiscard]] NormalSolution make_solution(SolveStatus status, double approach_m) const;
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "ctab/contact/strip_compliance.hpp"
 
@@ -27,6 +28,18 @@ struct Mim1dOptions {
   int max_outer_iterations = 60;
   //! Initial potential zone [y_min, y_max] [m] (Figure 7 experiments); default: the interpenetration zone.
   std::optional<std::pair<double, double>> starting_zone_m;
+};
+
+//! A converged MIM-1D solution carried to a neighbouring gap (the next lateral shift of a table sweep) as the
+//! starting point of its solve: the strip loads by strip index k (strip centre (k + 1/2) 2b from the gap's y = 0,
+//! strip_grid.hpp) and the approach beyond the gap's deepest point. Only the start changes: the solve converges to
+//! the same tolerance, so the result agrees with a cold start within Mim1dOptions::tolerance.
+struct Mim1dWarmStart {
+  long first_strip = 0;         //!< strip index k of loads_N[0]
+  std::vector<double> loads_N;  //!< strip loads N_k [N] (0 for strips out of contact); empty: no warm start
+  double depth_m = 0.0;         //!< approach minus the deepest separation of the grid [m]
+  [[nodiscard]] bool empty() const noexcept { return loads_N.empty(); }
+  void clear() noexcept { loads_N.clear(); }
 };
 
 }  // namespace ctab::gen

@@ -9,8 +9,9 @@
 //!   h'(t) = D(m) / sqrt(1 + t^2),  m = 1/(1 + t^2),  D(m) = (K - E)/m  (Carlson R_D, elliptic.hpp).
 //! Asymptotes: h(t) = t ln(4/t) + O(t^3 ln t) for t -> 0; h(t) = (pi/4) asinh(t) + pi/8 + (pi/4) ln 2 + O(1/t^2)
 //! for t -> infinity.
-//! h is tabulated once per process on 2^-40 <= t < 2^40 (128 cubic-Hermite intervals per octave, values from
-//! exact h' by 4-point Gauss-Legendre); absolute error below 1e-10. A lookup is a few integer operations on
+//! h is tabulated on 2^-40 <= t < 2^40 (128 cubic-Hermite intervals per octave, values from exact h' by 4-point
+//! Gauss-Legendre); absolute error below 1e-10. The table is computed at build time (contact_tables_gen writes
+//! it as source, bit for bit what build_intervals() computes) so no process pays for it at start. A lookup is a few integer operations on
 //! the IEEE exponent and mantissa plus one cubic, no logarithm.
 #include <bit>
 #include <cstddef>
@@ -21,6 +22,12 @@ namespace ctab::gen {
 
 class StripKernel {
  public:
+  static constexpr int kMinExponent = -40;
+  static constexpr int kMaxExponent = 40;
+  static constexpr int kMantissaBits = 7;
+  static constexpr double kTableMin = 0x1p-40;  //!< 2^kMinExponent
+  static constexpr double kTableMax = 0x1p+40;  //!< 2^kMaxExponent
+
   //! The process-wide table (built on first use; thread-safe).
   [[nodiscard]] static const StripKernel& instance();
 
@@ -44,20 +51,23 @@ class StripKernel {
   //! h'(t) evaluated exactly (Carlson), for tests and table construction.
   [[nodiscard]] static double exact_slope(double t) noexcept;
 
-  static constexpr int kMinExponent = -40;
-  static constexpr int kMaxExponent = 40;
-  static constexpr int kMantissaBits = 7;
-  static constexpr double kTableMin = 0x1p-40;  //!< 2^kMinExponent
-  static constexpr double kTableMax = 0x1p+40;  //!< 2^kMaxExponent
-
- private:
-  StripKernel();
   struct Interval {
     double t0;
     double inverse_width;
     double c0, c1, c2, c3;  // h(t0 + s w) = c0 + s (c1 + s (c2 + s c3)), s in [0, 1)
   };
-  std::vector<Interval> intervals_;
+  //! Intervals of the table.
+  static constexpr std::size_t kIntervalCount = static_cast<std::size_t>(kMaxExponent - kMinExponent)
+                                                << static_cast<unsigned>(kMantissaBits);
+  //! The table computed now (tests; the build-time generator contact_tables_gen).
+  [[nodiscard]] static std::vector<Interval> build_intervals();
+  //! The table in use (kIntervalCount intervals).
+  [[nodiscard]] const Interval* intervals() const noexcept { return intervals_; }
+
+ private:
+  StripKernel();
+  std::vector<Interval> storage_;  // the table when computed at start (a build without the generated one)
+  const Interval* intervals_;
 };
 
 }  // namespace ctab::gen

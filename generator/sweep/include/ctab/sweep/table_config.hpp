@@ -49,6 +49,10 @@ struct TableConfig {
   //! [solver] reference_point: "deepest" (false, the default) or "interpenetration-centre" (true, CONTACT's rule):
   //! where a patch's contact plane is placed (WheelRailOptions::reference_at_interpenetration_centre).
   bool reference_at_interpenetration_centre = false;
+  //! [solver] warm_start: each MIM-1D solve starts from its neighbour in dy, in fixed chains of rows
+  //! (table_generator.hpp, warm_start_previous_rows); entries then agree with cold starts within the solver
+  //! tolerance instead of bit for bit, and stay bit-identical across threads, shards and MPI ranks.
+  bool warm_start = false;
   std::vector<double> lateral_displacement_m;  //!< uniform axis [m]
   LoadKind load_kind = LoadKind::VerticalForce;
   std::vector<double> load_values;  //!< second axis, or one fixed value [N or m]

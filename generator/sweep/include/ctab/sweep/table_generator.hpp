@@ -46,6 +46,12 @@ struct SweepSetup {
   WheelRailOptions options;
   ContactMode mode = ContactMode::Wheelset;
   LoadKind load_kind = LoadKind::VerticalForce;
+  //! The config's lateral axis [m], whether the sweep is mirrored (one side solved) and whether its solves are
+  //! warm-started (TableConfig::warm_start), so that solve_table_case reproduces a table entry (it replays the
+  //! entry's warm-start chain).
+  std::vector<double> dy_axis_m;
+  bool mirrored = false;
+  bool warm_start = false;
 };
 
 //! An InputError of make_sweep_setup that also tells which config key was wrong and why, so that a caller whose
@@ -80,8 +86,10 @@ struct CaseWheel {
   WheelContact contact;
   bool exception = false;  //!< the solver threw (tables::CaseStatus::SolverException)
 };
+//! With `warm_start`, MIM-1D starts from it and leaves this case's solution in it (solve_wheel_contact).
 [[nodiscard]] CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
-                                         double load_value, WheelContactWorkspace& workspace) noexcept;
+                                         double load_value, WheelContactWorkspace& workspace,
+                                         Mim1dWarmStart* warm_start = nullptr) noexcept;
 
 //! Which wheels of a case to solve: [0] right, [1] left.
 using WheelSelection = std::array<bool, tables::kWheels>;
@@ -100,6 +108,14 @@ struct CaseSolution {
 };
 [[nodiscard]] CaseSolution solve_table_case(const SweepSetup& setup, double dy_m, double load_value,
                                             WheelSelection wheels = kBothWheels);
+
+//! Marks a row that starts cold (warm_start_previous_rows).
+inline constexpr std::size_t kColdStart = static_cast<std::size_t>(-1);
+//! For each of the n_dy rows of a sweep, the row whose solution its solves start from, or kColdStart. Chains are
+//! the runs of consecutive rows inside one work unit of case_partition.hpp (8 rows, and their mirror rows in a
+//! mirrored sweep), ascending; the first row of each run starts cold. A function of (n_dy, mirrored) only, so a
+//! table is the same at any thread count, and shards (whole units) merge into the single run's table bit for bit.
+[[nodiscard]] std::vector<std::size_t> warm_start_previous_rows(std::size_t n_dy, bool mirrored);
 
 //! Table status of a solver status (every shared value checked at compile time).
 [[nodiscard]] tables::CaseStatus case_status(SolveStatus status) noexcept;
