@@ -92,19 +92,8 @@ WheelRailOptions centred_options() {
   return options;
 }
 
-class FlangeReference : public ::testing::TestWithParam<Case> {
+class FlangeReference : public ctab::test::ManchesterSuite<Case> {
  protected:
-  static void SetUpTestSuite() {
-    CTAB_REQUIRE_SHARED();
-    manchester_ = new ctab::test::ManchesterSide;
-    side_ = &manchester_->side;
-  }
-  static void TearDownTestSuite() {
-    delete manchester_;
-    manchester_ = nullptr;
-    side_ = nullptr;
-  }
-
   static Errors measure(const Case& c) {
     const auto summary = ctab::test::read_csv(reference_path(std::string("planar_") + c.loading + ".csv"));
     const auto dys = summary.numbers("dy_mm");
@@ -147,12 +136,7 @@ class FlangeReference : public ::testing::TestWithParam<Case> {
     e.rail_point_mm = main.y_rail_m * 1e3 - ref_rail_point;
     return e;
   }
-
-  static ctab::test::ManchesterSide* manchester_;
-  static const SideGeometry* side_;
 };
-ctab::test::ManchesterSide* FlangeReference::manchester_ = nullptr;
-const SideGeometry* FlangeReference::side_ = nullptr;
 
 }  // namespace
 

@@ -1,6 +1,8 @@
 #pragma once
 // The Manchester benchmark profiles (../shared/profiles: S1002 wheel, UIC60 rail already inclined 1:40, so
 // inclination 0) placed on the default track: the set-up of CONTACT's wheel-rail reference results.
+#include <gtest/gtest.h>
+
 #include "ctab/io/profile_io.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "test_support.hpp"
@@ -23,6 +25,24 @@ struct ManchesterSide {
     options.inclination = 0.0;
     return gen::load_profile(shared_path(file), role, options);
   }
+};
+
+//! A parameterised suite on the Manchester side, loaded once per suite (skipped without ../shared).
+template <class Param>
+class ManchesterSuite : public ::testing::TestWithParam<Param> {
+ protected:
+  static void SetUpTestSuite() {
+    CTAB_REQUIRE_SHARED();
+    manchester_ = new ManchesterSide;
+    side_ = &manchester_->side;
+  }
+  static void TearDownTestSuite() {
+    delete manchester_;
+    manchester_ = nullptr;
+    side_ = nullptr;
+  }
+  inline static ManchesterSide* manchester_ = nullptr;
+  inline static const gen::SideGeometry* side_ = nullptr;
 };
 
 }  // namespace ctab::test

@@ -24,23 +24,7 @@ struct Case {
   const char* tag;
 };
 
-class WheelRailContact : public ::testing::TestWithParam<Case> {
- protected:
-  static void SetUpTestSuite() {
-    CTAB_REQUIRE_SHARED();
-    manchester_ = new ctab::test::ManchesterSide;
-    side_ = &manchester_->side;
-  }
-  static void TearDownTestSuite() {
-    delete manchester_;
-    manchester_ = nullptr;
-    side_ = nullptr;
-  }
-  static ctab::test::ManchesterSide* manchester_;
-  static const SideGeometry* side_;
-};
-ctab::test::ManchesterSide* WheelRailContact::manchester_ = nullptr;
-const SideGeometry* WheelRailContact::side_ = nullptr;
+class WheelRailContact : public ctab::test::ManchesterSuite<Case> {};
 
 // p0 along the patch: ours interpolated at CONTACT's rows (by rail y), RMS over max.
 double p0_rms(const WheelContact& c, const std::string& tag) {
