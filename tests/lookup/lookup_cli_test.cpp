@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -18,8 +20,11 @@ struct CommandRun {
   std::string output;
 };
 
+// CTest runs each test of this file as its own process, several at once: every path is this process's own.
+fs::path process_dir() { return fs::path(::testing::TempDir()) / ("ctab_lookup_cli_" + std::to_string(::getpid())); }
+
 CommandRun run(const std::string& arguments) {
-  const fs::path out = fs::path(::testing::TempDir()) / "ctab_lookup_cli_out.txt";
+  const fs::path out = process_dir() / "command_output.txt";
   const std::string command = std::string(CTAB_EXECUTABLE) + " " + arguments + " > " + out.string() + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(out);
@@ -31,9 +36,13 @@ CommandRun run(const std::string& arguments) {
 class LookupCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::path(::testing::TempDir()) / "ctab_lookup_cli";
+    dir_ = process_dir();
     fs::create_directories(dir_);
     ASSERT_EQ(run("generate --quiet -o " + (dir_ / "t.h5").string()).code, 0);
+  }
+  static void TearDownTestSuite() {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
   }
   static fs::path dir_;
 };
