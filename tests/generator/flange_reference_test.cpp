@@ -64,27 +64,6 @@ struct Errors {
   int patches = 0;
 };
 
-// p0 along the patch: ctab's strips interpolated at CONTACT's rows (by rail y), RMS over CONTACT's largest p0.
-double p0_rms(const WheelContact& contact, const std::string& strip_file) {
-  const auto table = ctab::test::read_csv(reference_path("strips/" + strip_file));
-  const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
-  std::vector<std::pair<double, double>> ours;
-  for (const auto& patch : contact.patches)
-    for (const auto& s : patch.strips) ours.emplace_back(s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
-  std::sort(ours.begin(), ours.end());
-  double sum = 0.0;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    double value = 0.0;  // outside ctab's patch
-    for (std::size_t k = 1; k < ours.size(); ++k)
-      if (y[i] >= ours[k - 1].first && y[i] <= ours[k].first && ours[k].first - ours[k - 1].first < 0.5) {
-        const double t = (y[i] - ours[k - 1].first) / (ours[k].first - ours[k - 1].first);
-        value = (1 - t) * ours[k - 1].second + t * ours[k].second;
-      }
-    sum += (value - p[i]) * (value - p[i]);
-  }
-  return std::sqrt(sum / static_cast<double>(y.size())) / *std::max_element(p.begin(), p.end());
-}
-
 // CONTACT's reference point: the centre of the interpenetration region (WheelRailOptions).
 WheelRailOptions centred_options() {
   WheelRailOptions options;
@@ -131,7 +110,8 @@ class FlangeReference : public ctab::test::ManchesterSuite<Case> {
     // angle, as ctab's force_lateral_N; angle = -atan2(lateral, vertical).
     e.angle_deg = -std::atan2(lateral, vertical_force) * kDegPerRad - ref_angle;
     e.lateral = (lateral - ref_lateral) / ref_vertical;
-    e.p0_rms = p0_rms(contact, std::string("planar_") + c.loading + "_" + c.tag + ".csv");
+    e.p0_rms = ctab::test::p0_profile_rms(contact, reference_path(std::string("strips/planar_") + c.loading + "_" +
+                                                                  c.tag + ".csv"));
     e.contact_angle_deg = angle / force * kDegPerRad - ref_angle;
     e.rail_point_mm = main.y_rail_m * 1e3 - ref_rail_point;
     return e;

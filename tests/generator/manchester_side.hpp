@@ -3,7 +3,14 @@
 // inclination 0) placed on the default track: the set-up of CONTACT's wheel-rail reference results.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "ctab/io/profile_io.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "test_support.hpp"
 
@@ -26,6 +33,28 @@ struct ManchesterSide {
     return gen::load_profile(shared_path(file), role, options);
   }
 };
+
+//! p0 along the patch against a CONTACT strip file (columns y_rail_mm, p0_i_MPa): ctab's strips interpolated
+//! linearly at CONTACT's rows by rail y (0 outside ctab's patches), RMS over CONTACT's largest p0.
+inline double p0_profile_rms(const gen::WheelContact& contact, const std::string& strip_file) {
+  const auto table = read_csv(strip_file);
+  const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
+  std::vector<std::pair<double, double>> ours;  // (y_rail [mm], p0 [MPa])
+  for (const auto& patch : contact.patches)
+    for (const auto& s : patch.strips) ours.emplace_back(s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
+  std::sort(ours.begin(), ours.end());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    double value = 0.0;
+    for (std::size_t k = 1; k < ours.size(); ++k)
+      if (y[i] >= ours[k - 1].first && y[i] <= ours[k].first && ours[k].first - ours[k - 1].first < 0.5) {
+        const double t = (y[i] - ours[k - 1].first) / (ours[k].first - ours[k - 1].first);
+        value = (1 - t) * ours[k - 1].second + t * ours[k].second;
+      }
+    sum += (value - p[i]) * (value - p[i]);
+  }
+  return std::sqrt(sum / static_cast<double>(y.size())) / *std::max_element(p.begin(), p.end());
+}
 
 //! A parameterised suite on the Manchester side, loaded once per suite (skipped without ../shared).
 template <class Param>

@@ -26,26 +26,9 @@ struct Case {
 
 class WheelRailContact : public ctab::test::ManchesterSuite<Case> {};
 
-// p0 along the patch: ours interpolated at CONTACT's rows (by rail y), RMS over max.
-double p0_rms(const WheelContact& c, const std::string& tag) {
-  const auto table =
-      ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/strips_" + tag + ".csv"));
-  const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
-  std::vector<std::pair<double, double>> ours;
-  for (const auto& patch : c.patches)
-    for (const auto& s : patch.strips) ours.emplace_back(s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
-  std::sort(ours.begin(), ours.end());
-  double sum = 0.0;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    double value = 0.0;
-    for (std::size_t k = 1; k < ours.size(); ++k)
-      if (y[i] >= ours[k - 1].first && y[i] <= ours[k].first && ours[k].first - ours[k - 1].first < 0.5) {
-        const double t = (y[i] - ours[k - 1].first) / (ours[k].first - ours[k - 1].first);
-        value = (1 - t) * ours[k - 1].second + t * ours[k].second;
-      }
-    sum += (value - p[i]) * (value - p[i]);
-  }
-  return std::sqrt(sum / static_cast<double>(y.size())) / *std::max_element(p.begin(), p.end());
+// CONTACT's strip file of a case.
+std::string strip_file(const std::string& tag) {
+  return ctab::test::shared_path("reference/contact/wheelrail/strips_" + tag + ".csv");
 }
 
 }  // namespace
@@ -79,7 +62,7 @@ TEST_P(WheelRailContact, MatchesContact) {
   EXPECT_NEAR(cop * 1e3, ref_cop, 0.3);
   EXPECT_NEAR(area * 1e6 / ref_area - 1.0, 0.0, 0.02);
   EXPECT_NEAR(pmax * 1e-6 / ref_pmax - 1.0, 0.0, 0.05);
-  EXPECT_LT(p0_rms(contact, c.tag), 0.05);
+  EXPECT_LT(ctab::test::p0_profile_rms(contact, strip_file(c.tag)), 0.05);
   if (contact.patches.size() == 1) {
     EXPECT_NEAR(angle * 180 / M_PI, ref_angle * 180 / M_PI, 0.2);
   } else {
@@ -90,7 +73,8 @@ TEST_P(WheelRailContact, MatchesContact) {
   std::ostringstream report;
   report << std::fixed << std::setprecision(3) << "dy " << c.dy_mm << " mm: cop " << cop * 1e3 - ref_cop
          << " mm, angle " << (angle - ref_angle) * 180 / M_PI << " deg, area " << 100 * (area * 1e6 / ref_area - 1)
-         << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %, p0 rms " << 100 * p0_rms(contact, c.tag) << " %";
+         << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %, p0 rms "
+         << 100 * ctab::test::p0_profile_rms(contact, strip_file(c.tag)) << " %";
   RecordProperty("deviation", report.str());
   std::cout << report.str() << '\n';
 }
