@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ctab/profiles/point_noise.hpp"
+
 namespace ctab::gen {
 
 namespace {
@@ -59,18 +61,52 @@ void fit(const std::vector<double>& s, const std::vector<double>& x, const std::
     }
 }
 
+// Summed-chord arc length s and trapezoid weights w of the points.
+void arc_length(const std::vector<double>& y, const std::vector<double>& z, std::vector<double>& s,
+                std::vector<double>& w) {
+  const std::size_t n = y.size();
+  s.assign(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(y[i] - y[i - 1], z[i] - z[i - 1]);
+  w.resize(n);
+  for (std::size_t i = 0; i < n; ++i) w[i] = 0.5 * (s[std::min(i + 1, n - 1)] - s[i == 0 ? 0 : i - 1]);
+}
+
+double lambda_of(double smoothing_length_m) {
+  return smoothing_length_m > 0.0 ? std::pow(smoothing_length_m / (2.0 * std::numbers::pi), 4) : 0.0;
+}
+
 }  // namespace
 
 SmoothingSplineCurve::SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z,
                                            double smoothing_length_m) {
-  const std::size_t n = y.size();
-  s_.assign(n, 0.0);
-  for (std::size_t i = 1; i < n; ++i) s_[i] = s_[i - 1] + std::hypot(y[i] - y[i - 1], z[i] - z[i - 1]);
-  std::vector<double> w(n);
-  for (std::size_t i = 0; i < n; ++i) w[i] = 0.5 * (s_[std::min(i + 1, n - 1)] - s_[i == 0 ? 0 : i - 1]);
-  const double lambda = smoothing_length_m > 0.0 ? std::pow(smoothing_length_m / (2.0 * std::numbers::pi), 4) : 0.0;
+  std::vector<double> w;
+  arc_length(y, z, s_, w);
+  const double lambda = lambda_of(smoothing_length_m);
   fit(s_, y, w, lambda, fy_, gy_);
   fit(s_, z, w, lambda, fz_, gz_);
+}
+
+double curvature_noise_per_m(double noise_sigma_m, double point_spacing_m, double smoothing_length_m) {
+  // Var f'' = sigma^2 h / (2 pi) int w^4 / (1 + lambda w^4)^2 dw = sigma^2 h lambda^(-5/4) sqrt(2) / 16
+  constexpr double kFactor = 0.29730177875068026;  // sqrt(sqrt(2) / 16)
+  return kFactor * noise_sigma_m * std::sqrt(point_spacing_m) * std::pow(lambda_of(smoothing_length_m), -0.625);
+}
+
+double length_for_curvature_noise_m(double noise_sigma_m, double point_spacing_m, double curvature_noise_per_m) {
+  constexpr double kFactor = 0.29730177875068026;
+  return 2.0 * std::numbers::pi *
+         std::pow(kFactor * noise_sigma_m * std::sqrt(point_spacing_m) / curvature_noise_per_m, 0.4);
+}
+
+SmoothingChoice choose_smoothing(const std::vector<double>& y, const std::vector<double>& z) {
+  SmoothingChoice choice{kDefaultSmoothingLength_m, estimate_point_noise_m(y, z)};
+  if (!(choice.noise_sigma_m > kNoiseThreshold_m)) return choice;
+  double length = 0.0;
+  for (std::size_t i = 1; i < y.size(); ++i) length += std::hypot(y[i] - y[i - 1], z[i] - z[i - 1]);
+  const double spacing = length / static_cast<double>(y.size() - 1);
+  choice.length_m = std::clamp(length_for_curvature_noise_m(choice.noise_sigma_m, spacing, kCurvatureNoise_per_m),
+                               kDefaultSmoothingLength_m, kMaxAutoSmoothingLength_m);
+  return choice;
 }
 
 CurvePoint SmoothingSplineCurve::at(double t) const {

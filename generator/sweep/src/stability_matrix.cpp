@@ -8,7 +8,6 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <random>
 #include <sstream>
 
 #include "ctab/contact/gap_profile.hpp"
@@ -16,6 +15,7 @@
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/normal_contact.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
+#include "ctab/profiles/sampled_points.hpp"
 #include "ctab/profiles/smoothing_spline.hpp"
 #include "ctab/sweep/accuracy_metrics.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
@@ -236,15 +236,11 @@ ProfileTable uic60_rail() {
 }
 
 //! S1002 as measured: points every 0.1 mm with `change(y)` added to z, through the smoothing spline (L [m]).
-template <class Change>
-ProfileTable measured_s1002(Change&& change, double smoothing_length_m, const std::string& name) {
+ProfileTable measured_s1002(const std::function<double(double)>& change, double smoothing_length_m,
+                            const std::string& name) {
   const ProfileTable exact(*s1002_curve(), kProfileTableStep_m, "S1002");
-  std::vector<double> y, z;
-  for (double s = exact.y_min(); s <= exact.y_max(); s += kMeasuredPointStep_m) {
-    y.push_back(s);
-    z.push_back(exact.at(s).z + change(s));
-  }
-  return ProfileTable(SmoothingSplineCurve(y, z, smoothing_length_m), kProfileTableStep_m, name);
+  const SampledPoints points = sample_points(exact, kMeasuredPointStep_m, PointSpacing::Lateral, change);
+  return ProfileTable(SmoothingSplineCurve(points.y_m, points.z_m, smoothing_length_m), kProfileTableStep_m, name);
 }
 
 Solver wheelrail_solver(std::shared_ptr<const WheelRail> wr, double dy_m, double force_N) {
@@ -325,9 +321,7 @@ void add_noisy_wheels(bool quick, std::vector<Case>& cases) {
   for (const double amplitude : amplitudes)
     for (const double smoothing : {1e-3, 0.0}) {
       // uniform noise of +-amplitude, seeded: the same profile on every run
-      auto noise = [generator = std::mt19937(12345u), amplitude](double) mutable {
-        return std::uniform_real_distribution<double>(-amplitude, amplitude)(generator);
-      };
+      SeededNoise noise(SeededNoise::Shape::Uniform, amplitude, 12345u);
       char prefix[48];
       std::snprintf(prefix, sizeof prefix, "noise=%gum L=%gmm ", amplitude * 1e6, smoothing * 1e3);
       const auto wr = std::make_shared<const WheelRail>(measured_s1002(noise, smoothing, prefix), uic60_rail());

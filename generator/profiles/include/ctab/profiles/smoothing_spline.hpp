@@ -22,4 +22,36 @@ class SmoothingSplineCurve final : public ProfileCurve {
   std::vector<double> s_, fy_, fz_, gy_, gz_;  // knots, smoothed values, second derivatives
 };
 
+//! Default smoothing length of point profiles [m] (CONTACT's method 1 at L = 1 mm).
+inline constexpr double kDefaultSmoothingLength_m = 1e-3;
+//! Noise [m] below which the automatic choice keeps the default length exactly (clean and finely quantised data).
+inline constexpr double kNoiseThreshold_m = 0.5e-6;
+//! Largest length the automatic choice takes [m] (the config's limit is 0.1 m).
+inline constexpr double kMaxAutoSmoothingLength_m = 50e-3;
+//! Curvature noise the automatic choice allows [1/m] (standard deviation of the smoothed noise's second
+//! derivative). Calibrated on S1002 and 60E1 with 5 um noise every 0.1 mm (tests/generator/profile_noise_test.cpp):
+//! it gives L = 3.5 mm there, one patch where the clean profile has one, area within 6 %; smaller L leaves patches
+//! split by the noise, larger L flattens the real curvature jumps of the flange root and gauge corner.
+inline constexpr double kCurvatureNoise_per_m = 2.0;
+
+//! Standard deviation [1/m] of the second derivative that the smoothing spline of length L [m] leaves of white
+//! noise of standard deviation sigma [m] on points spaced h [m]: the spline is the low-pass filter
+//! 1 / (1 + lambda omega^4) (Reinsch 1967; Silverman 1984's equivalent kernel), so
+//! Var f'' = sigma^2 h / (2 pi) int omega^4 / (1 + lambda omega^4)^2 d omega = sigma^2 h lambda^(-5/4) sqrt(2)/16.
+[[nodiscard]] double curvature_noise_per_m(double noise_sigma_m, double point_spacing_m, double smoothing_length_m);
+//! The inverse: the smoothing length [m] that leaves curvature noise `curvature_noise_per_m` [1/m].
+[[nodiscard]] double length_for_curvature_noise_m(double noise_sigma_m, double point_spacing_m,
+                                                  double curvature_noise_per_m);
+
+//! The noise-aware smoothing length of a point profile and the noise it was chosen for.
+struct SmoothingChoice {
+  double length_m = kDefaultSmoothingLength_m;  //!< chosen smoothing length L [m]
+  double noise_sigma_m = 0.0;                   //!< estimated noise normal to the profile [m] (point_noise.hpp)
+};
+//! `--smoothing auto`: the noise sigma estimated from the points (point_noise.hpp); L = the default while sigma is
+//! below kNoiseThreshold_m (clean data smooth exactly as with L = 1 mm), otherwise the L whose curvature noise is
+//! kCurvatureNoise_per_m at the profile's mean point spacing, clamped to [default, kMaxAutoSmoothingLength_m].
+//! L grows as sigma^(2/5) h^(1/5): 2, 5, 10 um at 0.1 mm give about 2.4, 3.5, 4.6 mm.
+[[nodiscard]] SmoothingChoice choose_smoothing(const std::vector<double>& y, const std::vector<double>& z);
+
 }  // namespace ctab::gen

@@ -1,0 +1,272 @@
+// Noise-aware smoothing of point profiles (issue 8, "No lost patches"): the noise estimate of point_noise.hpp on
+// synthetic noise of known sigma, the automatic smoothing length (smoothing_spline.hpp) and its effect on the
+// contact: S1002 and UIC60 1:40 sampled every 0.1 mm along the profile, Gaussian noise in z (fixed seeds), single
+// wheel at 78.5 kN, 0.2 mm strips, dy -6 ... +8 mm. Set CTAB_NOISE_REPORT=1 to print the table of the README.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ctab/contact/material.hpp"
+#include "ctab/profiles/builtin_profiles.hpp"
+#include "ctab/profiles/point_noise.hpp"
+#include "ctab/profiles/sampled_points.hpp"
+#include "ctab/profiles/smoothing_spline.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
+#include "ctab/wheelrail/wheelrail_geometry.hpp"
+
+namespace ctab::gen {
+namespace {
+
+constexpr double kPointStep_m = 0.1e-3;  // profilometer point spacing [m]
+constexpr double kForce_N = 78.5e3;      // single wheel, normal force
+constexpr double kStripWidth_m = 0.2e-3;
+
+ProfileTable exact_wheel() { return ProfileTable(*s1002_curve(), kProfileTableStep_m, "S1002"); }
+ProfileTable exact_rail() { return ProfileTable(*uic60_inclined_curve(1.0 / 40.0), kProfileTableStep_m, "UIC60"); }
+
+SampledPoints noisy_points(const ProfileTable& exact, double sigma_m, unsigned seed, double step_m = kPointStep_m) {
+  SeededNoise noise(SeededNoise::Shape::Gaussian, sigma_m, seed);
+  return sample_points(exact, step_m, PointSpacing::ArcLength,
+                       [&](double y) { return sigma_m > 0.0 ? noise(y) : 0.0; });
+}
+
+// The profile table of points smoothed with length L [m], or the automatic choice for L < 0.
+ProfileTable smoothed(const SampledPoints& points, double smoothing_length_m, SmoothingChoice* chosen = nullptr) {
+  const SmoothingChoice choice =
+      smoothing_length_m < 0.0 ? choose_smoothing(points.y_m, points.z_m) : SmoothingChoice{smoothing_length_m, 0.0};
+  if (chosen) *chosen = choice;
+  return ProfileTable(SmoothingSplineCurve(points.y_m, points.z_m, choice.length_m), kProfileTableStep_m, "points");
+}
+
+struct Result {
+  bool converged = false;
+  int patches = 0;
+  double area_m2 = 0.0, max_pressure_Pa = 0.0;
+};
+
+Result solve(const ProfileTable& wheel, const ProfileTable& rail, double dy_m) {
+  const SideGeometry side(wheel, rail, TrackSetup{});
+  WheelRailOptions options;
+  options.mim1d.strip_width_m = kStripWidth_m;
+  const WheelContact c =
+      solve_wheel_contact(side, dy_m, 0.0, effective_modulus(kSteel, kSteel), LoadKind::NormalForce, kForce_N, options);
+  Result r;
+  r.converged = c.status == SolveStatus::Converged;
+  for (const ContactPatch& p : c.patches) {
+    if (!(p.normal_force_N > 0.0)) continue;
+    ++r.patches;
+    r.area_m2 += p.area_m2;
+    r.max_pressure_Pa = std::max(r.max_pressure_Pa, p.max_pressure_Pa);
+  }
+  return r;
+}
+
+std::vector<double> shifts_m() {
+  std::vector<double> dy;
+  for (int k = -6; k <= 8; ++k) dy.push_back(k * 1e-3);
+  return dy;
+}
+
+// Worst deviations of a noisy profile's results from the clean profile's over the shifts.
+struct Deviation {
+  int patch_mismatches = 0, failures = 0;
+  double area = 0.0, pressure = 0.0;  // worst relative |noisy/clean - 1|
+  double length_m = 0.0, sigma_m = 0.0;
+};
+
+enum class Body { Wheel, Rail };
+
+Deviation deviation(Body body, double sigma_m, unsigned seed, double smoothing_length_m,
+                    const std::vector<Result>& clean) {
+  const ProfileTable wheel = exact_wheel(), rail = exact_rail();
+  const ProfileTable& noisy_source = body == Body::Wheel ? wheel : rail;
+  SmoothingChoice choice;
+  const ProfileTable noisy = smoothed(noisy_points(noisy_source, sigma_m, seed), smoothing_length_m, &choice);
+  const ProfileTable clean_other = smoothed(noisy_points(body == Body::Wheel ? rail : wheel, 0.0, 0), 1e-3);
+  Deviation d;
+  d.length_m = choice.length_m;
+  d.sigma_m = choice.noise_sigma_m;
+  const auto dy = shifts_m();
+  for (std::size_t k = 0; k < dy.size(); ++k) {
+    const Result r = body == Body::Wheel ? solve(noisy, clean_other, dy[k]) : solve(clean_other, noisy, dy[k]);
+    if (std::getenv("CTAB_NOISE_DETAIL"))
+      std::printf("  dy %+5.1f mm L %.2f mm: patches %d/%d area %+6.1f %% pmax %+6.1f %%\n", dy[k] * 1e3,
+                  choice.length_m * 1e3, r.patches, clean[k].patches, 100 * (r.area_m2 / clean[k].area_m2 - 1),
+                  100 * (r.max_pressure_Pa / clean[k].max_pressure_Pa - 1));
+    if (!r.converged) ++d.failures;
+    if (r.patches != clean[k].patches) ++d.patch_mismatches;
+    d.area = std::max(d.area, std::abs(r.area_m2 / clean[k].area_m2 - 1.0));
+    d.pressure = std::max(d.pressure, std::abs(r.max_pressure_Pa / clean[k].max_pressure_Pa - 1.0));
+  }
+  return d;
+}
+
+// The clean sampled profiles (both smoothed as today, L = 1 mm) over the shifts.
+std::vector<Result> clean_results() {
+  const ProfileTable wheel = smoothed(noisy_points(exact_wheel(), 0.0, 0), 1e-3);
+  const ProfileTable rail = smoothed(noisy_points(exact_rail(), 0.0, 0), 1e-3);
+  std::vector<Result> results;
+  for (const double dy : shifts_m()) results.push_back(solve(wheel, rail, dy));
+  return results;
+}
+
+// ---- the noise estimate ----
+
+TEST(PointNoise, EstimatesKnownGaussianNoiseOnWheelAndRail) {
+  for (const auto& exact : {exact_wheel(), exact_rail()})
+    // at 0.5 mm the profile's own curvature changes start to count (third differences grow as h^3)
+    for (const auto [step, tolerance] : {std::pair{0.1e-3, 0.12}, std::pair{0.5e-3, 0.25}})
+      for (const double sigma : {1e-6, 2e-6, 5e-6, 10e-6})
+        for (const unsigned seed : {1u, 2u, 3u}) {
+          const SampledPoints p = noisy_points(exact, sigma, seed, step);
+          // normal noise on the running surface: z-noise times the cosine of the slope, about 1
+          EXPECT_NEAR(estimate_point_noise_m(p.y_m, p.z_m), sigma, tolerance * sigma)
+              << exact.name() << " step " << step << " sigma " << sigma << " seed " << seed;
+        }
+}
+
+TEST(PointNoise, ExactDataGiveNoNoise) {
+  for (const auto& exact : {exact_wheel(), exact_rail()})
+    for (const double step : {0.1e-3, 0.5e-3}) {
+      const SampledPoints p = noisy_points(exact, 0.0, 0, step);
+      EXPECT_LT(estimate_point_noise_m(p.y_m, p.z_m), 0.05e-6) << exact.name() << " step " << step;
+    }
+}
+
+TEST(PointNoise, RejectsTooFewPoints) {
+  EXPECT_THROW((void)estimate_point_noise_m({0.0, 1.0, 2.0}, {0.0, 0.0, 0.0}), std::invalid_argument);
+}
+
+// ---- the automatic smoothing length ----
+
+TEST(AutoSmoothing, CleanProfilesKeepTheDefaultExactly) {
+  for (const auto& exact : {exact_wheel(), exact_rail()}) {
+    const SampledPoints p = noisy_points(exact, 0.0, 0);
+    const SmoothingChoice choice = choose_smoothing(p.y_m, p.z_m);
+    EXPECT_EQ(choice.length_m, kDefaultSmoothingLength_m) << exact.name();
+    EXPECT_EQ(smoothed(p, -1.0).z_samples(), smoothed(p, kDefaultSmoothingLength_m).z_samples()) << exact.name();
+  }
+}
+
+TEST(AutoSmoothing, CurvatureNoiseMatchesMonteCarlo) {
+  // Pure noise on a straight line: the smoothed curve's second derivative is the noise's curvature.
+  constexpr double sigma = 5e-6, h = 0.1e-3;
+  for (const double length : {2e-3, 4e-3}) {
+    double sum2 = 0.0;
+    int count = 0;
+    for (const unsigned seed : {1u, 2u, 3u, 4u}) {
+      SeededNoise noise(SeededNoise::Shape::Gaussian, sigma, seed);
+      std::vector<double> y, z;
+      for (int i = 0; i < 4000; ++i) {
+        y.push_back(i * h);
+        z.push_back(noise(0.0));
+      }
+      const SmoothingSplineCurve curve(y, z, length);
+      for (double t = 0.1 * curve.t_end(); t < 0.9 * curve.t_end(); t += h) {
+        sum2 += std::pow(curve.at(t).d2z, 2);
+        ++count;
+      }
+    }
+    EXPECT_NEAR(std::sqrt(sum2 / count), curvature_noise_per_m(sigma, h, length),
+                0.1 * curvature_noise_per_m(sigma, h, length))
+        << length;
+    EXPECT_NEAR(length_for_curvature_noise_m(sigma, h, curvature_noise_per_m(sigma, h, length)), length, 1e-12);
+  }
+}
+
+TEST(AutoSmoothing, LengthGrowsWithTheNoise) {
+  double previous = kDefaultSmoothingLength_m;
+  for (const double sigma : {2e-6, 5e-6, 10e-6}) {
+    const SampledPoints p = noisy_points(exact_wheel(), sigma, 3u);
+    const double length = choose_smoothing(p.y_m, p.z_m).length_m;
+    EXPECT_GT(length, previous) << sigma;
+    previous = length;
+    if (sigma == 5e-6) {
+      EXPECT_GT(length, 3.2e-3);
+      EXPECT_LT(length, 3.8e-3);
+    }
+  }
+}
+
+// ---- the contact on noisy profiles ----
+
+// Numbers [mm or um] of an environment variable, "2,4,8", scaled by `unit`, after `first`.
+std::vector<double> env_list(const char* name, std::vector<double> first, double unit) {
+  std::vector<double> lengths = std::move(first);
+  if (const char* extra = std::getenv(name)) {
+    std::string text = extra;
+    for (std::size_t at = 0; at < text.size();) {
+      const std::size_t comma = std::min(text.find(',', at), text.size());
+      lengths.push_back(std::stod(text.substr(at, comma - at)) * unit);
+      at = comma + 1;
+    }
+  }
+  return lengths;
+}
+
+void print_report() {
+  const auto clean = clean_results();
+  std::printf("| body | noise | smoothing | L chosen [mm] | sigma est. [um] | patch-count mismatches | failures | "
+              "worst area | worst pmax |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const Body body : {Body::Wheel, Body::Rail})
+    for (const double sigma : std::getenv("CTAB_NOISE_SIGMAS_UM") ? env_list("CTAB_NOISE_SIGMAS_UM", {}, 1e-6)
+                                                                  : std::vector<double>{2e-6, 5e-6, 10e-6})
+      for (const double length : env_list("CTAB_NOISE_LENGTHS_MM", {1e-3, -1.0}, 1e-3)) {
+        Deviation worst;
+        double l_min = 1e9, l_max = 0.0, s_min = 1e9, s_max = 0.0;
+        int cases = 0;
+        for (const unsigned seed : {1u, 2u, 3u}) {
+          const Deviation d = deviation(body, sigma, seed, length, clean);
+          worst.patch_mismatches += d.patch_mismatches;
+          worst.failures += d.failures;
+          worst.area = std::max(worst.area, d.area);
+          worst.pressure = std::max(worst.pressure, d.pressure);
+          l_min = std::min(l_min, d.length_m), l_max = std::max(l_max, d.length_m);
+          s_min = std::min(s_min, d.sigma_m), s_max = std::max(s_max, d.sigma_m);
+          cases += static_cast<int>(shifts_m().size());
+        }
+        std::printf(
+            "| %s | %g um | %s | %.2f-%.2f | %s | %d/%d | %d | %.1f %% | %.1f %% |\n",
+            body == Body::Wheel ? "wheel" : "rail", sigma * 1e6,
+            length < 0 ? std::string("auto").c_str()
+                       : ("L = " + std::to_string(length * 1e3).substr(0, 4) + " mm").c_str(),
+            l_min * 1e3, l_max * 1e3,
+            length < 0
+                ? (std::to_string(s_min * 1e6).substr(0, 4) + "-" + std::to_string(s_max * 1e6).substr(0, 4)).c_str()
+                : "-",
+            worst.patch_mismatches, cases, worst.failures, 100 * worst.area, 100 * worst.pressure);
+        std::fflush(stdout);
+      }
+}
+
+// Issue 8: 5 um noise gives the clean profile's patch count and area (within 6 %). Max pressure follows the
+// local curvature, which no smoothing length both frees of 5 um noise and keeps at the flange root: within 25 %
+// (the issue's 5 % is not met; README "How to choose the smoothing").
+TEST(NoisyContact, FiveMicronsKeepThePatchesAndTheArea) {
+  const auto clean = clean_results();
+  for (const Body body : {Body::Wheel, Body::Rail})
+    for (const unsigned seed : {1u, 2u, 3u}) {
+      const Deviation d = deviation(body, 5e-6, seed, -1.0, clean);
+      const char* name = body == Body::Wheel ? "wheel" : "rail";
+      EXPECT_EQ(d.patch_mismatches, 0) << name << " seed " << seed;
+      EXPECT_EQ(d.failures, 0) << name << " seed " << seed;
+      EXPECT_LT(d.area, 0.06) << name << " seed " << seed;
+      EXPECT_LT(d.pressure, 0.25) << name << " seed " << seed;
+      // the default length alone splits the patches
+      EXPECT_GT(deviation(body, 5e-6, seed, kDefaultSmoothingLength_m, clean).patch_mismatches, 5) << name;
+    }
+}
+
+TEST(NoisyContact, Report) {
+  if (!std::getenv("CTAB_NOISE_REPORT")) GTEST_SKIP() << "set CTAB_NOISE_REPORT=1 for the README table";
+  print_report();
+}
+
+}  // namespace
+}  // namespace ctab::gen
