@@ -93,9 +93,21 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
     add(app.add_option("--inclination", c.inclination_text,
                        "rail inclination: 1/40, 1/30, 1/20 or 0 (already inclined)")
             ->capture_default_str());
-    add(app.add_option("--smoothing", c.smoothing_length_m, "smoothing length of point profiles [m] (0 interpolates)")
-            ->capture_default_str()
-            ->check(finite_range(0.0, 0.05, "m")));
+    const NumberRule length{"\"auto\" or a smoothing length in [0, 0.05] m",
+                            [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 0.05; }};
+    add(app.add_option_function<std::string>(
+               "--smoothing",
+               [&c, length](const std::string& text) {
+                 double value = 0.0;
+                 c.smoothing_auto = text == gen::kSmoothingAuto;
+                 if (c.smoothing_auto) return;
+                 if (!parse_number(text, value) || !length.accept(value))
+                   throw CLI::ValidationError("--smoothing", "expected " + length.expectation + ", got " + text);
+                 c.smoothing_length_m = value;
+               },
+               "smoothing of point profiles: auto (from the points' noise, 1 mm when clean; README \"Curvature\") or "
+               "a length [m] (0 interpolates)")
+            ->default_str(c.smoothing_auto ? gen::kSmoothingAuto : number_text(c.smoothing_length_m)));
   }
   if (groups & kTrack) {
     add(app.add_option("--gauge", c.track.gauge_m, "track gauge [m]")

@@ -114,8 +114,11 @@ int solve_wheelrail(const SolveOptions& o) {
       throw gen::InputError("--dy", 0,
                             std::string("the ") + (wheel == 0 ? "right" : "left") + " wheel is off its rail at dy = " +
                                 millimetres(*o.dy_m) + " (no wheel point above the rail profile)");
-  if (o.json) std::cout << to_json(config, solution).dump(1) << '\n';
-  else print_summary(config, solution);
+  if (o.json) {
+    nlohmann::json json = to_json(config, solution);
+    add_smoothing(json, setup);
+    std::cout << json.dump(1) << '\n';
+  } else print_summary(config, solution);
   return report_failures(config, setup, solution) ? kExitCaseFailed : kExitSuccess;
 }
 

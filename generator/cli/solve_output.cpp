@@ -80,6 +80,14 @@ nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& 
   return json;
 }
 
+void add_smoothing(nlohmann::json& json, const gen::SweepSetup& setup) {
+  for (const auto& [body, smoothing] : {std::pair{"wheel", &setup.wheel_smoothing}, {"rail", &setup.rail_smoothing}})
+    if (smoothing->point_data)
+      json[std::string(body) + "_profile_smoothing"] = {{"automatic", smoothing->automatic},
+                                                        {"length_m", smoothing->length_m},
+                                                        {"noise_sigma_m", smoothing->noise_sigma_m}};
+}
+
 bool report_failures(const gen::TableConfig& config, const gen::SweepSetup& setup, const gen::CaseSolution& solution) {
   bool failed = false;
   for (std::size_t w = 0; w < solution.wheels.size(); ++w) {

@@ -13,12 +13,14 @@
 #include <vector>
 
 #include "ctab/contact/material.hpp"
+#include "ctab/io/profile_io.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/profiles/point_noise.hpp"
 #include "ctab/profiles/sampled_points.hpp"
 #include "ctab/profiles/smoothing_spline.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
+#include "test_support.hpp"
 
 namespace ctab::gen {
 namespace {
@@ -121,7 +123,7 @@ std::vector<Result> clean_results() {
 TEST(PointNoise, EstimatesKnownGaussianNoiseOnWheelAndRail) {
   for (const auto& exact : {exact_wheel(), exact_rail()})
     // at 0.5 mm the profile's own curvature changes start to count (third differences grow as h^3)
-    for (const auto [step, tolerance] : {std::pair{0.1e-3, 0.12}, std::pair{0.5e-3, 0.25}})
+    for (const auto& [step, tolerance] : {std::pair{0.1e-3, 0.12}, std::pair{0.5e-3, 0.25}})
       for (const double sigma : {1e-6, 2e-6, 5e-6, 10e-6})
         for (const unsigned seed : {1u, 2u, 3u}) {
           const SampledPoints p = noisy_points(exact, sigma, seed, step);
@@ -191,6 +193,21 @@ TEST(AutoSmoothing, LengthGrowsWithTheNoise) {
       EXPECT_GT(length, 3.2e-3);
       EXPECT_LT(length, 3.8e-3);
     }
+  }
+}
+
+TEST(AutoSmoothing, ManchesterFilesAreCleanAndKeepTheDefault) {
+  CTAB_REQUIRE_SHARED();
+  for (const auto& [file, role] : {std::pair{"profiles/MBench_S1002_v3.prw", ProfileRole::Wheel},
+                                   std::pair{"profiles/MBench_UIC60_v3.prr", ProfileRole::Rail},
+                                   std::pair{"profiles/MBench_UIC60_v3.ban", ProfileRole::Rail}}) {
+    ProfileReadOptions options;
+    options.inclination = 0.0;
+    const ProfilePoints p = read_profile_points(test::shared_path(file), role, options);
+    const SmoothingChoice choice = choose_smoothing(p.y_m, p.z_m);
+    std::printf("%s: %zu points, noise %.3g um, L %.3g mm\n", file, p.y_m.size(), choice.noise_sigma_m * 1e6,
+                choice.length_m * 1e3);
+    EXPECT_EQ(choice.length_m, kDefaultSmoothingLength_m) << file;
   }
 }
 

@@ -401,6 +401,13 @@ double parse_inclination(const std::string& text, const std::string& source, std
 }
 
 ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options) {
+  ProfileSmoothing smoothing;
+  return load_profile(spec, role, options, smoothing);
+}
+
+ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options,
+                          ProfileSmoothing& smoothing) {
+  smoothing = ProfileSmoothing{};
   const std::string name = lower(spec);
   std::shared_ptr<const ProfileCurve> curve;
   if (role == ProfileRole::Wheel && name == "s1002") {
@@ -411,7 +418,10 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
   }
   const ProfilePoints points = read_profile_points(spec, role, options);
   if (role == ProfileRole::Rail) check_not_inclined_twice(points, options.inclination, spec);
-  curve = std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, options.smoothing_length_m);
+  const SmoothingChoice choice = choose_smoothing(points.y_m, points.z_m);
+  smoothing = {true, options.smoothing_auto, options.smoothing_auto ? choice.length_m : options.smoothing_length_m,
+               choice.noise_sigma_m};
+  curve = std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, smoothing.length_m);
   if (role == ProfileRole::Rail) {
     if (options.inclination != 0.0)
       curve = std::make_shared<TransformedCurve>(curve, -std::atan(options.inclination), 0.0, 0.0);

@@ -21,7 +21,7 @@ const char* const kDefaultTableConfig = R"(# ctab default table: S1002 on UIC60 
 wheel = "S1002"          # built-in S1002, or a profile file (.prw, .whl, 2-column y z in mm)
 rail = "UIC60"           # built-in 60E1 (UIC60), or a profile file (.prr, .ban, ...)
 inclination = "1/40"     # rail inclination; "0" for a rail file that is already inclined
-smoothing_m = 1e-3       # smoothing length of point profiles [m]
+smoothing_m = "auto"     # point profiles: "auto" (from the points' noise; 1 mm when clean) or a length [m]
 
 [track]
 gauge_m = 1.435
@@ -200,8 +200,16 @@ void read_profiles(const Reader& r, TableConfig& c) {
   c.inclination_text = r.text("profiles", "inclination", c.inclination_text);
   c.inclination =
       parse_inclination(c.inclination_text, c.source, c.key_line("profiles.inclination"), "'profiles.inclination'");
-  c.smoothing_length_m = r.number_in("profiles", "smoothing_m", c.smoothing_length_m, 0.0, kMaxSmoothingLength_m,
-                                     "a smoothing length in [0, 0.1] m");
+  const toml::node* smoothing = r.find("profiles", "smoothing_m");
+  if (smoothing && smoothing->is_string()) {
+    if (smoothing->value<std::string>() != std::string(kSmoothingAuto))
+      r.fail(*smoothing, "profiles.smoothing_m", "expected \"auto\" or a smoothing length in [0, 0.1] m");
+    c.smoothing_auto = true;
+  } else if (smoothing) {
+    c.smoothing_auto = false;
+    c.smoothing_length_m = r.number_in("profiles", "smoothing_m", c.smoothing_length_m, 0.0, kMaxSmoothingLength_m,
+                                       "\"auto\" or a smoothing length in [0, 0.1] m");
+  }
 }
 
 // Plausibility ranges: wide enough for every gauge and wheel in service, narrow enough to catch mm for m.

@@ -65,12 +65,14 @@ SweepSetupError::SweepSetupError(const TableConfig& config, std::string key, std
 
 namespace {
 
-ProfileTable load_checked(const TableConfig& config, const std::string& spec, ProfileRole role, const char* key) {
+ProfileTable load_checked(const TableConfig& config, const std::string& spec, ProfileRole role, const char* key,
+                          ProfileSmoothing& smoothing) {
   ProfileReadOptions read;
+  read.smoothing_auto = config.smoothing_auto;
   read.smoothing_length_m = config.smoothing_length_m;
   read.inclination = config.inclination;
   try {
-    return load_profile(spec, role, read);
+    return load_profile(spec, role, read, smoothing);
   } catch (const InputError& e) {
     throw SweepSetupError(config, key, e.what());
   }
@@ -97,10 +99,10 @@ void check_strip_width(const TableConfig& config) {
 SweepSetup make_sweep_setup(const TableConfig& config) {
   check_strip_width(config);
   SweepSetup setup;
-  setup.wheel =
-      std::make_unique<const ProfileTable>(load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel"));
-  setup.rail =
-      std::make_unique<const ProfileTable>(load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail"));
+  setup.wheel = std::make_unique<const ProfileTable>(
+      load_checked(config, config.wheel, ProfileRole::Wheel, "profiles.wheel", setup.wheel_smoothing));
+  setup.rail = std::make_unique<const ProfileTable>(
+      load_checked(config, config.rail, ProfileRole::Rail, "profiles.rail", setup.rail_smoothing));
   setup.side = std::make_unique<const SideGeometry>(place_profiles(config, *setup.wheel, *setup.rail));
   setup.E_star_Pa = effective_modulus(config.material, config.material);
   setup.options.method = config.method;
@@ -512,6 +514,19 @@ std::string utc_now() {
   return text;
 }
 
+// "<body>_smoothing_m" and "<body>_noise_sigma_m" of a point profile (nothing for a built-in one).
+void add_smoothing_provenance(tables::Table& table, const std::string& body, const ProfileSmoothing& smoothing) {
+  if (!smoothing.point_data) return;
+  table.number_attributes[body + "_smoothing_m"] = smoothing.length_m;
+  table.number_attributes[body + "_noise_sigma_m"] = smoothing.noise_sigma_m;
+}
+
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 void add_provenance(tables::Table& table, const TableConfig& config, const SweepSetup& setup, const SweepPlan& plan,
                     const GeneratorInfo& info) {
   auto& text = table.text_attributes;
@@ -530,6 +545,7 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["rail_profile_sha256"] =
       sha256_hex(setup.rail->z_samples().data(), setup.rail->z_samples().size() * sizeof(double));
   text["rail_inclination"] = config.inclination_text;
+  text["smoothing"] = config.smoothing_auto ? kSmoothingAuto : number_text(config.smoothing_length_m) + " m";
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
   text["method"] = method_name(config.method);
   text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
@@ -540,6 +556,8 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   number["strip_width_m"] = config.strip_width_m;
   number["gauge_m"] = config.track.gauge_m;
   number["nominal_radius_m"] = config.track.nominal_radius_m;
+  add_smoothing_provenance(table, "wheel", setup.wheel_smoothing);
+  add_smoothing_provenance(table, "rail", setup.rail_smoothing);
   table.integer_attributes["threads"] = plan.threads;
   table.integer_attributes[tables::kCompressionLevelAttribute] = static_cast<std::int64_t>(config.compression_level);
 }

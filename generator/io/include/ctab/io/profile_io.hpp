@@ -13,8 +13,8 @@
 //!   unless `length_unit_m` says otherwise.
 //! Options may mirror y or z on top of the file's own settings; z (and a wheel's y) are auto-detected when
 //! not given: a rail's ends lie below its top, a wheel's flange tip (largest z) at y < 0.
-//! Point data are smoothed by the arc-length smoothing spline (smoothing_spline.hpp) with a smoothing length
-//! of 1 mm by default. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
+//! Point data are smoothed by the arc-length smoothing spline (smoothing_spline.hpp), by default with the
+//! noise-aware length (choose_smoothing: 1 mm on clean data, longer as the points' noise grows), or a given one. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
 //! the highest point of the head. A rail file whose head is already canted (rail_cant.hpp) by more than half the
 //! inclination to be applied (at most 1/80) is an error: it would be inclined twice.
 //! Errors (InputError) name the file, the line and what was expected: missing header block, non-numeric point,
@@ -37,7 +37,8 @@ struct ProfileReadOptions {
   std::optional<bool> mirror_y;      //!< mirror y (on top of the file's setting); default per format/auto
   std::optional<bool> mirror_z;      //!< mirror z; default auto-detect
   double length_unit_m = 1e-3;       //!< unit of plain-text and MiniProf coordinates [m]
-  double smoothing_length_m = 1e-3;  //!< L of the smoothing spline [m]; 0 interpolates
+  bool smoothing_auto = true;        //!< choose L from the points' noise (choose_smoothing); false: as below
+  double smoothing_length_m = 1e-3;  //!< L of the smoothing spline [m] when not automatic; 0 interpolates
   double inclination = 1.0 / 40.0;   //!< rail inclination tan(angle) towards the track centre; 0: as given
 };
 
@@ -55,7 +56,19 @@ struct ProfilePoints {
 [[nodiscard]] double parse_inclination(const std::string& text, const std::string& source, std::size_t line,
                                        const std::string& what);
 
+//! How a profile's points were smoothed (provenance): the length used and the noise estimated from the points
+//! (point_noise.hpp), also when the length was given. Built-in profiles are analytic: point_data false.
+struct ProfileSmoothing {
+  bool point_data = false;     //!< the profile came from a file's points
+  bool automatic = false;      //!< the length was chosen from the noise
+  double length_m = 0.0;       //!< smoothing length L used [m]
+  double noise_sigma_m = 0.0;  //!< estimated noise normal to the profile [m]
+};
+
 //! A profile table from a built-in name (wheel: "S1002"; rail: "UIC60" or "60E1") or a file path.
 [[nodiscard]] ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options);
+//! The same, telling how the points were smoothed.
+[[nodiscard]] ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options,
+                                        ProfileSmoothing& smoothing);
 
 }  // namespace ctab::gen

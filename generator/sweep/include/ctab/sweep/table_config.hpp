@@ -25,6 +25,8 @@ inline constexpr double kMinStripWidth_m = 10e-6;
 inline constexpr double kMaxStripWidth_m = 5e-3;
 //! Largest smoothing length of point profiles [m] (chosen: 100x the default 1 mm catches "1" meant as mm).
 inline constexpr double kMaxSmoothingLength_m = 0.1;
+//! The value of [profiles] smoothing_m and --smoothing that chooses the length from the points' noise.
+inline constexpr const char* kSmoothingAuto = "auto";
 //! Most patch slots per wheel and case in the table ([output] patch_slots).
 inline constexpr std::size_t kMaxPatchSlots = 16;
 //! Most cases (lateral shifts x loads) per table. Chosen: at about 1 ms per wheel solve this is an hour on 1 core.
@@ -40,7 +42,8 @@ struct TableConfig {
   std::string rail = "UIC60";
   std::string inclination_text = "1/40";
   double inclination = 1.0 / 40.0;   //!< rail inclination tan(angle); 0: the rail file is already inclined
-  double smoothing_length_m = 1e-3;  //!< smoothing of point profiles [m]
+  bool smoothing_auto = true;        //!< smoothing_m = "auto": L chosen from each point profile's noise
+  double smoothing_length_m = 1e-3;  //!< smoothing length of point profiles [m] when not automatic
   TrackSetup track;
   ElasticMaterial material = kSteel;  //!< both bodies
   ContactMode mode = ContactMode::Wheelset;

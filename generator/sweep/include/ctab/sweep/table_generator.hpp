@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "ctab/contact/error.hpp"
+#include "ctab/io/profile_io.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/tables/table.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
@@ -38,9 +39,10 @@ struct GeneratorInfo {
 //! Everything a table case needs, built once from a config (serial; may throw InputError). Movable: the
 //! profiles live behind pointers, so `side` stays valid.
 struct SweepSetup {
-  std::unique_ptr<const ProfileTable> wheel, rail;  //!< the profiles actually used (both sides)
-  std::unique_ptr<const SideGeometry> side;         //!< profiles on the track (one side frame; the left mirrored)
-  double E_star_Pa = 0.0;                           //!< effective modulus of the two bodies [Pa]
+  std::unique_ptr<const ProfileTable> wheel, rail;   //!< the profiles actually used (both sides)
+  ProfileSmoothing wheel_smoothing, rail_smoothing;  //!< how point profiles were smoothed (provenance)
+  std::unique_ptr<const SideGeometry> side;          //!< profiles on the track (one side frame; the left mirrored)
+  double E_star_Pa = 0.0;                            //!< effective modulus of the two bodies [Pa]
   //! Method and strip width from the config, the other solver options at their defaults. A single-case caller
   //! (`ctab solve --curvature/--update`) may change them before solving; generate_table never does.
   WheelRailOptions options;
