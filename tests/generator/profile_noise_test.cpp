@@ -12,12 +12,19 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_run.hpp"
+#include "ctab/contact/error.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/profiles/point_noise.hpp"
 #include "ctab/profiles/sampled_points.hpp"
 #include "ctab/profiles/smoothing_spline.hpp"
+#include "ctab/sweep/table_config.hpp"
+#include "ctab/sweep/table_generator.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "test_support.hpp"
@@ -278,6 +285,80 @@ TEST(NoisyContact, FiveMicronsKeepThePatchesAndTheArea) {
       // the default length alone splits the patches
       EXPECT_GT(deviation(body, 5e-6, seed, kDefaultSmoothingLength_m, clean).patch_mismatches, 5) << name;
     }
+}
+
+// ---- the option: config, tables, solve --json ----
+
+std::string config_error(const std::string& text) {
+  try {
+    (void)parse_table_config(text, "c.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+const std::string kSmallAxes =
+    "[solver]\nmode = \"wheel\"\n[axes]\nlateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n"
+    "vertical_load_N = 78.5e3\n";
+
+TEST(SmoothingOption, ConfigTakesAutoOrALength) {
+  EXPECT_TRUE(parse_table_config(kSmallAxes, "c.toml").smoothing_auto);  // the default
+  const TableConfig automatic = parse_table_config("[profiles]\nsmoothing_m = \"auto\"\n" + kSmallAxes, "c.toml");
+  EXPECT_TRUE(automatic.smoothing_auto);
+  const TableConfig fixed = parse_table_config("[profiles]\nsmoothing_m = 2e-3\n" + kSmallAxes, "c.toml");
+  EXPECT_FALSE(fixed.smoothing_auto);
+  EXPECT_EQ(fixed.smoothing_length_m, 2e-3);
+  EXPECT_EQ(config_error("[profiles]\nsmoothing_m = \"soft\"\n" + kSmallAxes),
+            "c.toml:2: 'profiles.smoothing_m': expected \"auto\" or a smoothing length in [0, 0.1] m");
+  EXPECT_EQ(config_error("[profiles]\nsmoothing_m = 1\n" + kSmallAxes),
+            "c.toml:2: 'profiles.smoothing_m': expected \"auto\" or a smoothing length in [0, 0.1] m");
+}
+
+// S1002 with 5 um noise as a 2-column file (mm).
+std::string noisy_wheel_file() {
+  const SampledPoints p = noisy_points(exact_wheel(), 5e-6, 11u);
+  std::ostringstream text;
+  text.precision(10);
+  for (std::size_t i = 0; i < p.y_m.size(); ++i) text << p.y_m[i] * 1e3 << ' ' << p.z_m[i] * 1e3 << '\n';
+  return test::write_temp("noisy_s1002.txt", text.str());
+}
+
+TEST(SmoothingOption, TablesRecordTheChosenLengthAndNoise) {
+  const std::string file = noisy_wheel_file();
+  const TableConfig c = parse_table_config("[profiles]\nwheel = \"" + file + "\"\n" + kSmallAxes, "c.toml");
+  const tables::Table t = generate_table(c, GeneratorInfo{});
+  EXPECT_EQ(t.text_attributes.at("smoothing"), "auto");
+  ASSERT_TRUE(t.number_attributes.count("wheel_smoothing_m"));
+  EXPECT_GT(t.number_attributes.at("wheel_smoothing_m"), 3.2e-3);
+  EXPECT_LT(t.number_attributes.at("wheel_smoothing_m"), 3.8e-3);
+  EXPECT_NEAR(t.number_attributes.at("wheel_noise_sigma_m"), 5e-6, 0.6e-6);
+  EXPECT_FALSE(t.number_attributes.count("rail_smoothing_m"));  // built-in UIC60: analytic, not smoothed
+  const TableConfig fixed =
+      parse_table_config("[profiles]\nwheel = \"" + file + "\"\nsmoothing_m = 1e-3\n" + kSmallAxes, "c.toml");
+  const tables::Table f = generate_table(fixed, GeneratorInfo{});
+  EXPECT_EQ(f.text_attributes.at("smoothing"), "0.001 m");
+  EXPECT_EQ(f.number_attributes.at("wheel_smoothing_m"), 1e-3);
+  EXPECT_EQ(f.number_attributes.at("wheel_noise_sigma_m"), t.number_attributes.at("wheel_noise_sigma_m"));
+}
+
+TEST(SmoothingOption, SolveJsonReportsTheSmoothing) {
+  const std::string file = noisy_wheel_file();
+  const std::string solve = "solve --mode wheel --dy 0 --vertical-load 78500 --json --wheel " + file;
+  const test::CtabRun automatic = test::run_ctab(solve);
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
+  const auto json = nlohmann::json::parse(automatic.out);
+  EXPECT_TRUE(json.at("wheel_profile_smoothing").at("automatic").get<bool>());
+  EXPECT_GT(json.at("wheel_profile_smoothing").at("length_m").get<double>(), 3.2e-3);
+  EXPECT_FALSE(json.contains("rail_profile_smoothing"));
+  const test::CtabRun fixed = test::run_ctab(solve + " --smoothing 0.002");
+  ASSERT_EQ(fixed.exit_code, 0) << fixed.err;
+  EXPECT_EQ(nlohmann::json::parse(fixed.out).at("wheel_profile_smoothing").at("length_m").get<double>(), 2e-3);
+  const test::CtabRun bad = test::run_ctab(solve + " --smoothing soft");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--smoothing: expected \"auto\" or a smoothing length in [0, 0.05] m, got soft"),
+            std::string::npos)
+      << bad.err;
 }
 
 TEST(NoisyContact, Report) {
