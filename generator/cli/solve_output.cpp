@@ -85,6 +85,7 @@ void add_smoothing(nlohmann::json& json, const gen::SweepSetup& setup) {
     if (smoothing->point_data)
       json[std::string(body) + "_profile_smoothing"] = {{"automatic", smoothing->automatic},
                                                         {"length_m", smoothing->length_m},
+                                                        {"length_near_jumps_m", smoothing->jump_length_m},
                                                         {"noise_sigma_m", smoothing->noise_sigma_m}};
 }
 

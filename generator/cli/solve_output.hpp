@@ -16,7 +16,7 @@ void print_summary(const gen::TableConfig& config, const gen::CaseSolution& solu
 //!  "right": {...}, "left": {...}} with each wheel as gen::to_json(WheelContact) with the wheelset's dy and roll
 //! (track frame) and the table's status name; only solved wheels appear.
 [[nodiscard]] nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& solution);
-//! Adds "wheel_profile_smoothing" and "rail_profile_smoothing" ({automatic, length_m, noise_sigma_m}) for the
+//! Adds "wheel_profile_smoothing" and "rail_profile_smoothing" ({automatic, length_m, length_near_jumps_m, noise_sigma_m}) for the
 //! profiles read from point files (built-in profiles are analytic and have none).
 void add_smoothing(nlohmann::json& json, const gen::SweepSetup& setup);
 //! One line on stderr per solved wheel whose status is not a success, with the geometry's hint; true if any.

@@ -47,10 +47,11 @@ SampledPoints noisy_points(const ProfileTable& exact, double sigma_m, unsigned s
 
 // The profile table of points smoothed with length L [m], or the automatic choice for L < 0.
 ProfileTable smoothed(const SampledPoints& points, double smoothing_length_m, SmoothingChoice* chosen = nullptr) {
-  const SmoothingChoice choice =
-      smoothing_length_m < 0.0 ? choose_smoothing(points.y_m, points.z_m) : SmoothingChoice{smoothing_length_m, 0.0};
+  SmoothingChoice choice{smoothing_length_m, smoothing_length_m, 0.0};
+  if (smoothing_length_m < 0.0) choice = choose_smoothing(points.y_m, points.z_m);
   if (chosen) *chosen = choice;
-  return ProfileTable(SmoothingSplineCurve(points.y_m, points.z_m, choice.length_m), kProfileTableStep_m, "points");
+  return ProfileTable(SmoothingSplineCurve(points.y_m, points.z_m, smoothing_lengths(points.y_m, points.z_m, choice)),
+                      kProfileTableStep_m, "points");
 }
 
 struct Result {
@@ -86,7 +87,7 @@ std::vector<double> shifts_m() {
 struct Deviation {
   int patch_mismatches = 0, failures = 0;
   double area = 0.0, pressure = 0.0;  // worst relative |noisy/clean - 1|
-  double length_m = 0.0, sigma_m = 0.0;
+  double length_m = 0.0, jump_length_m = 0.0, sigma_m = 0.0;
 };
 
 enum class Body { Wheel, Rail };
@@ -100,6 +101,7 @@ Deviation deviation(Body body, double sigma_m, unsigned seed, double smoothing_l
   const ProfileTable clean_other = smoothed(noisy_points(body == Body::Wheel ? rail : wheel, 0.0, 0), 1e-3);
   Deviation d;
   d.length_m = choice.length_m;
+  d.jump_length_m = choice.jump_length_m;
   d.sigma_m = choice.noise_sigma_m;
   const auto dy = shifts_m();
   for (std::size_t k = 0; k < dy.size(); ++k) {
@@ -193,14 +195,40 @@ TEST(AutoSmoothing, LengthGrowsWithTheNoise) {
   double previous = kDefaultSmoothingLength_m;
   for (const double sigma : {2e-6, 5e-6, 10e-6}) {
     const SampledPoints p = noisy_points(exact_wheel(), sigma, 3u);
-    const double length = choose_smoothing(p.y_m, p.z_m).length_m;
-    EXPECT_GT(length, previous) << sigma;
-    previous = length;
+    const SmoothingChoice choice = choose_smoothing(p.y_m, p.z_m);
+    EXPECT_GT(choice.jump_length_m, previous) << sigma;
+    EXPECT_GT(choice.length_m, 2.0 * choice.jump_length_m) << sigma;
+    previous = choice.jump_length_m;
     if (sigma == 5e-6) {
-      EXPECT_GT(length, 3.2e-3);
-      EXPECT_LT(length, 3.8e-3);
+      EXPECT_NEAR(choice.length_m, 8.8e-3, 0.4e-3);
+      EXPECT_NEAR(choice.jump_length_m, 3.5e-3, 0.2e-3);
     }
   }
+}
+
+// The short length sits at the curvature jumps of the flange (S1002) and of the R300/R80 and R80/R13 junctions
+// (60E1), not on the tread, whose curvature changes gradually.
+TEST(AutoSmoothing, ShortLengthsOnlyNearCurvatureJumps) {
+  const SampledPoints wheel = noisy_points(exact_wheel(), 5e-6, 1u);
+  const SmoothingChoice choice = choose_smoothing(wheel.y_m, wheel.z_m);
+  const auto lengths = smoothing_lengths(wheel.y_m, wheel.z_m, choice);
+  for (std::size_t i = 0; i < wheel.y_m.size(); ++i) {
+    if (wheel.y_m[i] > -10e-3) {
+      EXPECT_EQ(lengths[i], choice.length_m) << "tread, y " << wheel.y_m[i];
+    }
+    if (wheel.y_m[i] > -40e-3 && wheel.y_m[i] < -30e-3) {  // flange root
+      EXPECT_LT(lengths[i], 0.5 * choice.length_m) << "flange root, y " << wheel.y_m[i];
+    }
+  }
+  const SampledPoints rail = noisy_points(exact_rail(), 5e-6, 1u);
+  const auto rail_lengths = smoothing_lengths(rail.y_m, rail.z_m, choose_smoothing(rail.y_m, rail.z_m));
+  const auto shortest = *std::min_element(rail_lengths.begin(), rail_lengths.end());
+  const auto longest = *std::max_element(rail_lengths.begin(), rail_lengths.end());
+  EXPECT_LT(shortest, 0.5 * longest);
+  // clean points: one length, the default
+  const SampledPoints clean = noisy_points(exact_rail(), 0.0, 0u);
+  for (const double l : smoothing_lengths(clean.y_m, clean.z_m, choose_smoothing(clean.y_m, clean.z_m)))
+    ASSERT_EQ(l, kDefaultSmoothingLength_m);
 }
 
 TEST(AutoSmoothing, ManchesterFilesAreCleanAndKeepTheDefault) {
@@ -236,14 +264,15 @@ std::vector<double> env_list(const char* name, std::vector<double> first, double
 
 void print_report() {
   const auto clean = clean_results();
-  std::printf("| body | noise | smoothing | L chosen [mm] | sigma est. [um] | patch-count mismatches | failures | "
-              "worst area | worst pmax |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| body | noise | smoothing | L [mm] (near jumps) | sigma est. [um] | patch-count mismatches | failures | "
+      "worst area | worst pmax |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const Body body : {Body::Wheel, Body::Rail})
     for (const double sigma : std::getenv("CTAB_NOISE_SIGMAS_UM") ? env_list("CTAB_NOISE_SIGMAS_UM", {}, 1e-6)
                                                                   : std::vector<double>{2e-6, 5e-6, 10e-6})
       for (const double length : env_list("CTAB_NOISE_LENGTHS_MM", {1e-3, -1.0}, 1e-3)) {
         Deviation worst;
-        double l_min = 1e9, l_max = 0.0, s_min = 1e9, s_max = 0.0;
+        double l_min = 1e9, l_max = 0.0, j_min = 1e9, j_max = 0.0, s_min = 1e9, s_max = 0.0;
         int cases = 0;
         for (const unsigned seed : {1u, 2u, 3u}) {
           const Deviation d = deviation(body, sigma, seed, length, clean);
@@ -252,15 +281,16 @@ void print_report() {
           worst.area = std::max(worst.area, d.area);
           worst.pressure = std::max(worst.pressure, d.pressure);
           l_min = std::min(l_min, d.length_m), l_max = std::max(l_max, d.length_m);
+          j_min = std::min(j_min, d.jump_length_m), j_max = std::max(j_max, d.jump_length_m);
           s_min = std::min(s_min, d.sigma_m), s_max = std::max(s_max, d.sigma_m);
           cases += static_cast<int>(shifts_m().size());
         }
         std::printf(
-            "| %s | %g um | %s | %.2f-%.2f | %s | %d/%d | %d | %.1f %% | %.1f %% |\n",
+            "| %s | %g um | %s | %.1f-%.1f (%.1f-%.1f) | %s | %d/%d | %d | %.1f %% | %.1f %% |\n",
             body == Body::Wheel ? "wheel" : "rail", sigma * 1e6,
             length < 0 ? std::string("auto").c_str()
                        : ("L = " + std::to_string(length * 1e3).substr(0, 4) + " mm").c_str(),
-            l_min * 1e3, l_max * 1e3,
+            l_min * 1e3, l_max * 1e3, j_min * 1e3, j_max * 1e3,
             length < 0
                 ? (std::to_string(s_min * 1e6).substr(0, 4) + "-" + std::to_string(s_max * 1e6).substr(0, 4)).c_str()
                 : "-",
@@ -269,10 +299,10 @@ void print_report() {
       }
 }
 
-// Issue 8: 5 um noise gives the clean profile's patch count and area (within 6 %). Max pressure follows the
-// local curvature, which no smoothing length both frees of 5 um noise and keeps at the flange root: within 25 %
-// (the issue's 5 % is not met; README "How to choose the smoothing").
-TEST(NoisyContact, FiveMicronsKeepThePatchesAndTheArea) {
+// Issue 8: 5 um noise gives the clean profile's patch count, and on the wheel area and max pressure within 5 %.
+// On the rail the tread contact sits at the crown's R300/R80 junction, where the short length leaves noise in the
+// curvature: max pressure within 25 % there (README "How to choose the smoothing").
+TEST(NoisyContact, FiveMicronsKeepThePatchesAreaAndPressure) {
   const auto clean = clean_results();
   for (const Body body : {Body::Wheel, Body::Rail})
     for (const unsigned seed : {1u, 2u, 3u}) {
@@ -280,8 +310,8 @@ TEST(NoisyContact, FiveMicronsKeepThePatchesAndTheArea) {
       const char* name = body == Body::Wheel ? "wheel" : "rail";
       EXPECT_EQ(d.patch_mismatches, 0) << name << " seed " << seed;
       EXPECT_EQ(d.failures, 0) << name << " seed " << seed;
-      EXPECT_LT(d.area, 0.06) << name << " seed " << seed;
-      EXPECT_LT(d.pressure, 0.25) << name << " seed " << seed;
+      EXPECT_LT(d.area, body == Body::Wheel ? 0.05 : 0.06) << name << " seed " << seed;
+      EXPECT_LT(d.pressure, body == Body::Wheel ? 0.05 : 0.25) << name << " seed " << seed;
       // the default length alone splits the patches
       EXPECT_GT(deviation(body, 5e-6, seed, kDefaultSmoothingLength_m, clean).patch_mismatches, 5) << name;
     }
@@ -330,8 +360,8 @@ TEST(SmoothingOption, TablesRecordTheChosenLengthAndNoise) {
   const tables::Table t = generate_table(c, GeneratorInfo{});
   EXPECT_EQ(t.text_attributes.at("smoothing"), "auto");
   ASSERT_TRUE(t.number_attributes.count("wheel_smoothing_m"));
-  EXPECT_GT(t.number_attributes.at("wheel_smoothing_m"), 3.2e-3);
-  EXPECT_LT(t.number_attributes.at("wheel_smoothing_m"), 3.8e-3);
+  EXPECT_NEAR(t.number_attributes.at("wheel_smoothing_m"), 8.8e-3, 0.4e-3);
+  EXPECT_NEAR(t.number_attributes.at("wheel_smoothing_near_jumps_m"), 3.5e-3, 0.2e-3);
   EXPECT_NEAR(t.number_attributes.at("wheel_noise_sigma_m"), 5e-6, 0.6e-6);
   EXPECT_FALSE(t.number_attributes.count("rail_smoothing_m"));  // built-in UIC60: analytic, not smoothed
   const TableConfig fixed =
@@ -339,6 +369,7 @@ TEST(SmoothingOption, TablesRecordTheChosenLengthAndNoise) {
   const tables::Table f = generate_table(fixed, GeneratorInfo{});
   EXPECT_EQ(f.text_attributes.at("smoothing"), "0.001 m");
   EXPECT_EQ(f.number_attributes.at("wheel_smoothing_m"), 1e-3);
+  EXPECT_EQ(f.number_attributes.at("wheel_smoothing_near_jumps_m"), 1e-3);
   EXPECT_EQ(f.number_attributes.at("wheel_noise_sigma_m"), t.number_attributes.at("wheel_noise_sigma_m"));
 }
 
@@ -349,7 +380,8 @@ TEST(SmoothingOption, SolveJsonReportsTheSmoothing) {
   ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
   const auto json = nlohmann::json::parse(automatic.out);
   EXPECT_TRUE(json.at("wheel_profile_smoothing").at("automatic").get<bool>());
-  EXPECT_GT(json.at("wheel_profile_smoothing").at("length_m").get<double>(), 3.2e-3);
+  EXPECT_NEAR(json.at("wheel_profile_smoothing").at("length_m").get<double>(), 8.8e-3, 0.4e-3);
+  EXPECT_NEAR(json.at("wheel_profile_smoothing").at("length_near_jumps_m").get<double>(), 3.5e-3, 0.2e-3);
   EXPECT_FALSE(json.contains("rail_profile_smoothing"));
   const test::CtabRun fixed = test::run_ctab(solve + " --smoothing 0.002");
   ASSERT_EQ(fixed.exit_code, 0) << fixed.err;

@@ -418,10 +418,11 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
   }
   const ProfilePoints points = read_profile_points(spec, role, options);
   if (role == ProfileRole::Rail) check_not_inclined_twice(points, options.inclination, spec);
-  const SmoothingChoice choice = choose_smoothing(points.y_m, points.z_m);
-  smoothing = {true, options.smoothing_auto, options.smoothing_auto ? choice.length_m : options.smoothing_length_m,
-               choice.noise_sigma_m};
-  curve = std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, smoothing.length_m);
+  SmoothingChoice choice = choose_smoothing(points.y_m, points.z_m);
+  if (!options.smoothing_auto) choice.length_m = choice.jump_length_m = options.smoothing_length_m;
+  smoothing = {true, options.smoothing_auto, choice.length_m, choice.jump_length_m, choice.noise_sigma_m};
+  curve =
+      std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, smoothing_lengths(points.y_m, points.z_m, choice));
   if (role == ProfileRole::Rail) {
     if (options.inclination != 0.0)
       curve = std::make_shared<TransformedCurve>(curve, -std::atan(options.inclination), 0.0, 0.0);

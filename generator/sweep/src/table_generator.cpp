@@ -514,10 +514,12 @@ std::string utc_now() {
   return text;
 }
 
-// "<body>_smoothing_m" and "<body>_noise_sigma_m" of a point profile (nothing for a built-in one).
+// "<body>_smoothing_m", "<body>_smoothing_near_jumps_m" and "<body>_noise_sigma_m" of a point profile (nothing for a
+// built-in one).
 void add_smoothing_provenance(tables::Table& table, const std::string& body, const ProfileSmoothing& smoothing) {
   if (!smoothing.point_data) return;
   table.number_attributes[body + "_smoothing_m"] = smoothing.length_m;
+  table.number_attributes[body + "_smoothing_near_jumps_m"] = smoothing.jump_length_m;
   table.number_attributes[body + "_noise_sigma_m"] = smoothing.noise_sigma_m;
 }
 

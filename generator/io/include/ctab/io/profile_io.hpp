@@ -61,7 +61,8 @@ struct ProfilePoints {
 struct ProfileSmoothing {
   bool point_data = false;     //!< the profile came from a file's points
   bool automatic = false;      //!< the length was chosen from the noise
-  double length_m = 0.0;       //!< smoothing length L used [m]
+  double length_m = 0.0;       //!< smoothing length L used [m] (on the running surfaces when automatic)
+  double jump_length_m = 0.0;  //!< L used near jumps of the curvature [m] (smoothing_lengths)
   double noise_sigma_m = 0.0;  //!< estimated noise normal to the profile [m]
 };
 

@@ -14,6 +14,9 @@ class SmoothingSplineCurve final : public ProfileCurve {
  public:
   //! Points (y, z) [m], ordered with increasing y; smoothing length L [m] (0: interpolate).
   SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z, double smoothing_length_m);
+  //! The same with a smoothing length per point [m] (weights w_i / lambda_i, a locally varying low-pass).
+  SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z,
+                       const std::vector<double>& smoothing_lengths_m);
   [[nodiscard]] double t_begin() const override { return s_.front(); }
   [[nodiscard]] double t_end() const override { return s_.back(); }
   [[nodiscard]] CurvePoint at(double t) const override;
@@ -29,10 +32,15 @@ inline constexpr double kNoiseThreshold_m = 0.5e-6;
 //! Largest length the automatic choice takes [m] (the config's limit is 0.1 m).
 inline constexpr double kMaxAutoSmoothingLength_m = 50e-3;
 //! Curvature noise the automatic choice allows [1/m] (standard deviation of the smoothed noise's second
-//! derivative). Calibrated on S1002 and 60E1 with 5 um noise every 0.1 mm (tests/generator/profile_noise_test.cpp):
-//! it gives L = 3.5 mm there, one patch where the clean profile has one, area within 6 %; smaller L leaves patches
-//! split by the noise, larger L flattens the real curvature jumps of the flange root and gauge corner.
-inline constexpr double kCurvatureNoise_per_m = 2.0;
+//! derivative): on the running surfaces (kCurvatureNoise_per_m) and near jumps of the curvature, where a long L
+//! would flatten the real profile (kJumpCurvatureNoise_per_m). Calibrated on S1002 and 60E1 with 2, 5 and 10 um
+//! noise every 0.1 mm (tests/generator/profile_noise_test.cpp): 5 um gives L = 8.8 mm and 3.5 mm near jumps.
+inline constexpr double kCurvatureNoise_per_m = 0.2;
+inline constexpr double kJumpCurvatureNoise_per_m = 2.0;
+//! A curvature jump: the pilot curvature's second difference over +-kJumpReach x L exceeds this [1/m] (S1002's
+//! flange root and 60E1's R300/R80/R13 junctions are 8 to 65 1/m; the noise left at L is about 0.5 1/m).
+inline constexpr double kCurvatureJump_per_m = 4.0;
+inline constexpr double kJumpReach = 0.4;
 
 //! Standard deviation [1/m] of the second derivative that the smoothing spline of length L [m] leaves of white
 //! noise of standard deviation sigma [m] on points spaced h [m]: the spline is the low-pass filter
@@ -43,15 +51,23 @@ inline constexpr double kCurvatureNoise_per_m = 2.0;
 [[nodiscard]] double length_for_curvature_noise_m(double noise_sigma_m, double point_spacing_m,
                                                   double curvature_noise_per_m);
 
-//! The noise-aware smoothing length of a point profile and the noise it was chosen for.
+//! The noise-aware smoothing of a point profile and the noise it was chosen for.
 struct SmoothingChoice {
-  double length_m = kDefaultSmoothingLength_m;  //!< chosen smoothing length L [m]
-  double noise_sigma_m = 0.0;                   //!< estimated noise normal to the profile [m] (point_noise.hpp)
+  double length_m = kDefaultSmoothingLength_m;       //!< L on the running surfaces [m]
+  double jump_length_m = kDefaultSmoothingLength_m;  //!< L near jumps of the curvature [m] (<= length_m)
+  double noise_sigma_m = 0.0;                        //!< estimated noise normal to the profile [m] (point_noise.hpp)
 };
-//! `--smoothing auto`: the noise sigma estimated from the points (point_noise.hpp); L = the default while sigma is
-//! below kNoiseThreshold_m (clean data smooth exactly as with L = 1 mm), otherwise the L whose curvature noise is
-//! kCurvatureNoise_per_m at the profile's mean point spacing, clamped to [default, kMaxAutoSmoothingLength_m].
-//! L grows as sigma^(2/5) h^(1/5): 2, 5, 10 um at 0.1 mm give about 2.4, 3.5, 4.6 mm.
+//! `--smoothing auto`: the noise sigma estimated from the points (point_noise.hpp); both lengths the default 1 mm
+//! while sigma is below kNoiseThreshold_m (clean data smooth exactly as with L = 1 mm); otherwise the lengths whose
+//! curvature noise is kCurvatureNoise_per_m and kJumpCurvatureNoise_per_m at the profile's mean point spacing,
+//! clamped to [default, kMaxAutoSmoothingLength_m]. L grows as sigma^(2/5) h^(1/5): 2, 5, 10 um at 0.1 mm give
+//! about 6.1, 8.8, 11.6 mm (2.4, 3.5, 4.6 mm near jumps).
 [[nodiscard]] SmoothingChoice choose_smoothing(const std::vector<double>& y, const std::vector<double>& z);
+
+//! The smoothing length at each point: choice.length_m, but choice.jump_length_m within kJumpReach x L of a jump
+//! of the curvature (found on a pilot fit with choice.length_m), growing back by at most 1 m per m of arc length
+//! (so the long smoothing never reaches across a jump). All equal when the two lengths are.
+[[nodiscard]] std::vector<double> smoothing_lengths(const std::vector<double>& y, const std::vector<double>& z,
+                                                    const SmoothingChoice& choice);
 
 }  // namespace ctab::gen
