@@ -14,7 +14,8 @@ class SmoothingSplineCurve final : public ProfileCurve {
  public:
   //! Points (y, z) [m], ordered with increasing y; smoothing length L [m] (0: interpolate).
   SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z, double smoothing_length_m);
-  //! The same with a smoothing length per point [m] (weights w_i / lambda_i, a locally varying low-pass).
+  //! The same with a smoothing length per point [m]: residual weights w_i / lambda_i against a unit penalty, i.e.
+  //! (R + Q^T Lambda W^-1 Q) gamma = Q^T x, f = x - Lambda W^-1 Q gamma, a low-pass whose cut-off follows L_i.
   SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z,
                        const std::vector<double>& smoothing_lengths_m);
   [[nodiscard]] double t_begin() const override { return s_.front(); }
