@@ -64,6 +64,7 @@ void print_summary(const gen::TableConfig& config, const gen::CaseSolution& solu
 nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& solution) {
   nlohmann::json json = {{"mode", mode_name(config.mode)},
                          {"method", method_name(config.method)},
+                         {"surface", std::string(gen::surface_name(config.surface))},
                          {"dy_m", solution.dy_m},
                          {"roll_rad", solution.roll.roll_rad},
                          {"roll_converged", solution.roll.converged},
