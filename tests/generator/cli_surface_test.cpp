@@ -72,6 +72,13 @@ TEST(CliSurface, ConfigKeyReachesSolveAndTable) {
   EXPECT_EQ(planar.surface, ctab::gen::ContactSurface::Planar);
 }
 
+TEST(CliSurface, TextOutputNamesTheConformalSurface) {
+  const ctab::test::CtabRun run = ctab::test::run_ctab(
+      {"solve", "--mode", "wheel", "--dy", "0", "--vertical-load", "78.5e3", "--surface", "conformal"});
+  ASSERT_EQ(run.exit_code, 0) << run.output();
+  EXPECT_NE(run.out.find("mim1d (conformal surface)"), std::string::npos) << run.out;
+}
+
 TEST(CliSurface, BadNameIsAnInputError) {
   const ctab::test::CtabRun bad = ctab::test::run_ctab(
       {"solve", "--mode", "wheel", "--dy", "0", "--vertical-load", "78.5e3", "--surface", "round"});
