@@ -149,6 +149,12 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
             ->check(CLI::IsMember({std::string(gen::kReferencePointDeepest), std::string(gen::kReferencePointCentre)}))
             ->default_str(std::string(c.reference_at_interpenetration_centre ? gen::kReferencePointCentre
                                                                              : gen::kReferencePointDeepest)));
+    add(app.add_option_function<std::string>(
+               "--surface", [&c](const std::string& name) { c.surface = *gen::parse_contact_surface(name); },
+               "contact surface of a patch: planar (one plane) or conformal (curved surface midway between the "
+               "profiles, one normal per strip; README \"Flange and flank\")")
+            ->check(CLI::IsMember({std::string(gen::kSurfacePlanar), std::string(gen::kSurfaceConformal)}))
+            ->default_str(std::string(gen::surface_name(c.surface))));
   }
   if (groups & kMaterial) {
     const NumberRule youngs{"a finite Young's modulus > 0 in Pa", [](double v) { return std::isfinite(v) && v > 0.0; }};

@@ -52,8 +52,10 @@ void print_summary(const gen::NormalSolution& s) {
 }
 
 void print_summary(const gen::TableConfig& config, const gen::CaseSolution& solution) {
-  std::printf("%s on %s (%s), %s mode, %s, strips %.3f mm: dy %.3f mm, roll %.4f mrad%s, %s %g\n", config.wheel.c_str(),
-              config.rail.c_str(), config.inclination_text.c_str(), mode_name(config.mode), method_name(config.method),
+  std::printf("%s on %s (%s), %s mode, %s%s, strips %.3f mm: dy %.3f mm, roll %.4f mrad%s, %s %g\n",
+              config.wheel.c_str(), config.rail.c_str(), config.inclination_text.c_str(), mode_name(config.mode),
+              method_name(config.method),
+              config.surface == gen::ContactSurface::Conformal ? " (conformal surface)" : "",
               config.strip_width_m * 1e3, solution.dy_m * 1e3, solution.roll.roll_rad * 1e3,
               solution.roll.converged ? "" : " (roll iteration failed)", gen::load_axis_name(config.load_kind),
               solution.load_value);
@@ -64,6 +66,7 @@ void print_summary(const gen::TableConfig& config, const gen::CaseSolution& solu
 nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& solution) {
   nlohmann::json json = {{"mode", mode_name(config.mode)},
                          {"method", method_name(config.method)},
+                         {"surface", std::string(gen::surface_name(config.surface))},
                          {"dy_m", solution.dy_m},
                          {"roll_rad", solution.roll.roll_rad},
                          {"roll_converged", solution.roll.converged},

@@ -188,13 +188,23 @@ TEST_F(FlangeReference, ReferencePointMatchesContact) {
   }
 }
 
-// Guards: {area, pmax, cop_mm, angle_deg, lateral, p0_rms}; 0 = the target holds.
+// Guards: {area, pmax, cop_mm, angle_deg, lateral, p0_rms}; 0 = the target holds. Measured with the gap
+// sampled at the solved vertical approach (wheelrail_contact.cpp, solve_main_patch; before: h at first contact):
+//   VL 5.5: area +1.53 % (was -7.7), pmax +0.41, cop +0.031 mm (was -0.38), direction -1.48 deg, lateral 2.84 %
+//   VL 6.5: area -1.28 % (was +17.7), pmax -0.94 % (was -11.5), cop +0.004 mm (was -0.58), direction 0.38 deg,
+//           p0 rms 7.7 % (was 10.6)
+//   VL 7.5: area -6.23 %, direction 0.274 deg (was 0.239), lateral -3.86 % (was -3.38), p0 rms 10.7 %
+//   NF 5.5: area +0.17 % (was -9.5), cop 0.000 mm, direction -1.35 deg, lateral 2.34 %
+//   NF 6.5: area -1.42 % (was +16.0), pmax -0.89 %, cop +0.003 mm, direction 0.33 deg, p0 rms 6.4 %
+//   NF 7.5: area -8.96 %, p0 rms 17.1 %
+// The only guard raised: VL 7.5 lateral 0.037 -> 0.040 (the direction on the 69 deg flank moved 0.035 deg with the
+// reference point; lateral = FZ tan(angle) amplifies 1 deg to 14 % of FZ there).
 INSTANTIATE_TEST_SUITE_P(Planar, FlangeReference,
-                         ::testing::Values(Case{"vertical_load", 5.5, "p5p50", {0.08, 0, 0.40, 1.6, 0.030, 0}},
-                                           Case{"vertical_load", 6.5, "p6p50", {0.19, 0.12, 0.60, 0.45, 0, 0.115}},
-                                           Case{"vertical_load", 7.5, "p7p50", {0.065, 0, 0, 0, 0.037, 0.115}},
-                                           Case{"normal_force", 5.5, "p5p50", {0.10, 0, 0.41, 1.45, 0.025, 0}},
-                                           Case{"normal_force", 6.5, "p6p50", {0.17, 0.11, 0.54, 0.40, 0, 0.115}},
+                         ::testing::Values(Case{"vertical_load", 5.5, "p5p50", {0, 0, 0, 1.6, 0.030, 0}},
+                                           Case{"vertical_load", 6.5, "p6p50", {0, 0, 0, 0.40, 0, 0.08}},
+                                           Case{"vertical_load", 7.5, "p7p50", {0.065, 0, 0, 0, 0.040, 0.115}},
+                                           Case{"normal_force", 5.5, "p5p50", {0, 0, 0, 1.45, 0.025, 0}},
+                                           Case{"normal_force", 6.5, "p6p50", {0, 0, 0, 0.35, 0, 0.07}},
                                            Case{"normal_force", 7.5, "p7p50", {0.095, 0, 0, 0, 0, 0.18}}),
                          [](const ::testing::TestParamInfo<Case>& param) {
                            return std::string(param.param.loading) + "_" + param.param.tag;

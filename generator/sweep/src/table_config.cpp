@@ -39,6 +39,7 @@ mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "whe
 method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (README "Method ladder")
 strip_width_m = 0.2e-3
 reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
+surface = "planar"       # contact surface: "planar" (one plane per patch) or "conformal" (curved, CONTACT D=4)
 warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; README "Speed")
 
 [axes]
@@ -255,6 +256,11 @@ void read_solver(const Reader& r, TableConfig& c) {
            "expected \"deepest\" or \"interpenetration-centre\", got \"" + r.text("solver", "reference_point", "") +
                "\"");
   c.reference_at_interpenetration_centre = *centre;
+  const std::optional<ContactSurface> surface = parse_contact_surface(r.text("solver", "surface", "planar"));
+  if (!surface)
+    r.fail(*r.find("solver", "surface"), "solver.surface",
+           "expected \"planar\" or \"conformal\", got \"" + r.text("solver", "surface", "") + "\"");
+  c.surface = *surface;
   c.warm_start = r.flag("solver", "warm_start", c.warm_start);
 }
 
@@ -343,7 +349,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
       {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
        {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
-       {"solver", {"mode", "method", "strip_width_m", "reference_point", "warm_start"}},
+       {"solver", {"mode", "method", "strip_width_m", "reference_point", "surface", "warm_start"}},
        {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;

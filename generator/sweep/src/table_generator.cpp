@@ -108,6 +108,7 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.options.method = config.method;
   setup.options.mim1d.strip_width_m = config.strip_width_m;  // range checked by the config
   setup.options.reference_at_interpenetration_centre = config.reference_at_interpenetration_centre;
+  setup.options.surface = config.surface;
   setup.mode = config.mode;
   setup.load_kind = config.load_kind;
   setup.dy_axis_m = config.lateral_displacement_m;
@@ -550,6 +551,7 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["smoothing"] = config.smoothing_auto ? kSmoothingAuto : number_text(config.smoothing_length_m) + " m";
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
   text["method"] = method_name(config.method);
+  text["surface"] = std::string(surface_name(config.surface));
   text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;

@@ -52,6 +52,8 @@ struct TableConfig {
   //! [solver] reference_point: "deepest" (false, the default) or "interpenetration-centre" (true, CONTACT's rule):
   //! where a patch's contact plane is placed (WheelRailOptions::reference_at_interpenetration_centre).
   bool reference_at_interpenetration_centre = false;
+  //! [solver] surface: "planar" (the default) or "conformal" (WheelRailOptions::surface).
+  ContactSurface surface = ContactSurface::Planar;
   //! [solver] warm_start: each MIM-1D solve starts from its neighbour in dy, in fixed chains of rows
   //! (table_generator.hpp, warm_start_previous_rows); entries then agree with cold starts within the solver
   //! tolerance instead of bit for bit, and stay bit-identical across threads, shards and MPI ranks.

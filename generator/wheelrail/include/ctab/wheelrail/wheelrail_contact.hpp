@@ -10,10 +10,21 @@
 //! root at a shift of 5 mm) fall into the same patch, as CONTACT combines them. A minimum outside every window
 //! whose gap the approach closes opens a patch of its own; the rest are near misses, reported with their gaps.
 //! Loading: total normal force (sum over patches; the paper's and CONTACT's convention), vertical force
-//! (sum of N_k cos delta_k), or vertical approach of the wheel beyond first contact (each patch then takes the
-//! normal approach dz cos delta_k). With several patches the vertical approach is found by a safeguarded root
-//! finder. A patch's contact angle is the direction of its resultant normal force: the load-weighted mean of the
-//! rail inclination over its strips (on a curved patch steeper than the inclination at the centre of pressure).
+//! (sum of N_i cos alpha_i over the strips), or vertical approach dz of the wheel beyond first contact. h(s) is
+//! sampled with the wheel lowered by dz (a prescribed load re-samples it at the solved dz until dz settles), so
+//! that each strip sees the vertical shift along its own normal, dz cos(delta_w)/cos(delta_w - alpha) at a wheel
+//! surface of inclination delta_w, not a uniform dz cos(delta_ref): the strip solver's scalar approach is
+//! dz cos(delta_ref) and the rest is part of h. With several patches the vertical approach is found by a
+//! safeguarded root finder. A planar patch's contact angle is the load-weighted mean of the rail inclination over
+//! its strips (on a curved patch steeper than the inclination at the centre of pressure).
+//!
+//! Conformal surface (WheelRailOptions::surface, CONTACT's conformal approach D = 4): instead of the plane, a
+//! curved surface midway between rail and wheel, marched from the reference point: each surface point lies midway
+//! between the two profiles on its own normal, inclined at alpha = the mean of the two profile inclinations there;
+//! s is the arc length (0 at the reference point), h the separation along the local normal, A = cos(alpha)/(2 r),
+//! B the difference of the two profile curvatures (the surface's own curvature cancels); the strip solver is
+//! unchanged (half-space on the unrolled surface). Each strip pushes along its own normal, the contact angle is the
+//! direction of the resultant, and the centre of pressure is sum N_i y_i / sum N_i over the strips' surface points.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -27,8 +38,8 @@
 namespace ctab::gen {
 
 struct PatchStrip {
-  double s_m = 0.0;            //!< lateral coordinate in the contact plane [m]
-  double y_rail_m = 0.0;       //!< the same point on the rail profile [m]
+  double s_m = 0.0;            //!< lateral coordinate in the contact plane (conformal: arc length) [m]
+  double y_rail_m = 0.0;       //!< rail y of the point: the rail below it (planar), the surface point (conformal) [m]
   double half_length_m = 0.0;  //!< a_i [m]
   double p0_Pa = 0.0;          //!< p0_i [Pa]
 };
@@ -36,20 +47,22 @@ struct PatchStrip {
 struct ContactPatch {
   std::string zone;  //!< "tread" (S > -26 mm, S1002 section B and beyond) or "flange"
   double normal_force_N = 0.0;
-  //! Force of the wheel on the rail in the side frame, summed over the strips along each strip's normal (today
+  //! Force of the wheel on the rail in the side frame, summed over the strips along each strip's normal (planar:
   //! every strip of a patch has the contact-plane normal): lateral + towards the field side, vertical + down [N].
   //! The load balance uses the same components, so sum force_vertical_N = prescribed vertical load.
   double force_lateral_N = 0.0;
   double force_vertical_N = 0.0;
   double area_m2 = 0.0;
   double max_pressure_Pa = 0.0;
-  double approach_m = 0.0;         //!< normal approach of the patch [m]
-  double plane_angle_rad = 0.0;    //!< inclination of the contact plane (rail slope at the reference point) [rad]
-  double contact_angle_rad = 0.0;  //!< direction of the resultant normal force (load-weighted rail inclination) [rad]
-  double y_rail_m = 0.0;           //!< contact reference point (deepest rigid point) on the rail [m]
-  double y_wheel_m = 0.0;          //!< the same on the wheel, origin at the tape circle [m]
-  double rolling_radius_m = 0.0;   //!< rolling radius at the reference point [m]
-  double y_cop_rail_m = 0.0;       //!< centre of pressure on the rail [m]
+  double approach_m = 0.0;       //!< normal approach of the patch [m]
+  double plane_angle_rad = 0.0;  //!< reference angle: the rail slope at the reference point (planar: the plane) [rad]
+  //! Direction of the resultant normal force [rad]: planar, the load-weighted rail inclination; conformal,
+  //! atan2(-force_lateral_N, force_vertical_N).
+  double contact_angle_rad = 0.0;
+  double y_rail_m = 0.0;                //!< contact reference point (deepest rigid point) on the rail [m]
+  double y_wheel_m = 0.0;               //!< the same on the wheel, origin at the tape circle [m]
+  double rolling_radius_m = 0.0;        //!< rolling radius at the reference point [m]
+  double y_cop_rail_m = 0.0;            //!< centre of pressure on the rail (conformal: CONTACT's y_cop_rail) [m]
   double s_min_m = 0.0, s_max_m = 0.0;  //!< lateral extent of the loaded strips in the plane [m]
   std::vector<PatchStrip> strips;
 };

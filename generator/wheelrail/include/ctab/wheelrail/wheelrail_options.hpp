@@ -20,6 +20,12 @@ enum class LoadKind : std::int8_t {
   Approach = 2,       //!< vertical approach of the wheel beyond first contact [m]
 };
 
+//! The contact surface of a patch's strip problem (wheelrail_contact.hpp).
+enum class ContactSurface : std::int8_t {
+  Planar = 0,     //!< one plane tangent to the rail at the reference point; every strip has its normal
+  Conformal = 1,  //!< a curved surface midway between rail and wheel, s its arc length, one normal per strip
+};
+
 //! The rung of the method ladder (contact_method.hpp); the earlier name, same values.
 using NormalMethod = ContactMethod;
 
@@ -35,7 +41,25 @@ struct WheelRailOptions {
   //! default: it moves the
   //! interpolated default table's flange force by up to 4.4 % at dy 6.33 mm (lookup_accuracy_test guard 3 %).
   bool reference_at_interpenetration_centre = false;
+  //! Contact surface (config [solver] surface, CLI --surface): planar (the default) or conformal (CONTACT's
+  //! conformal approach, D = 4; README "Flange and flank").
+  ContactSurface surface = ContactSurface::Planar;
 };
+
+//! Names of the contact surfaces (config [solver] surface, CLI --surface).
+inline constexpr std::string_view kSurfacePlanar = "planar";
+inline constexpr std::string_view kSurfaceConformal = "conformal";
+
+//! "planar" / "conformal" -> the surface; else nullopt.
+[[nodiscard]] inline std::optional<ContactSurface> parse_contact_surface(std::string_view name) noexcept {
+  if (name == kSurfacePlanar) return ContactSurface::Planar;
+  if (name == kSurfaceConformal) return ContactSurface::Conformal;
+  return std::nullopt;
+}
+
+[[nodiscard]] inline std::string_view surface_name(ContactSurface surface) noexcept {
+  return surface == ContactSurface::Conformal ? kSurfaceConformal : kSurfacePlanar;
+}
 
 //! Names of the contact reference point (config [solver] reference_point, CLI --reference-point).
 inline constexpr std::string_view kReferencePointDeepest = "deepest";
