@@ -28,6 +28,7 @@ namespace ctab::gen {
 using tables::CaseStatus;
 static_assert(static_cast<int>(SolveStatus::Converged) == static_cast<int>(CaseStatus::Converged));
 static_assert(static_cast<int>(SolveStatus::NoContact) == static_cast<int>(CaseStatus::NoContact));
+static_assert(static_cast<int>(SolveStatus::UnderResolved) == static_cast<int>(CaseStatus::UnderResolved));
 static_assert(static_cast<int>(SolveStatus::MaxIterations) == static_cast<int>(CaseStatus::MaxIterations));
 static_assert(static_cast<int>(SolveStatus::InvalidInput) == static_cast<int>(CaseStatus::InvalidInput));
 static_assert(static_cast<int>(SolveStatus::ZoneTruncated) == static_cast<int>(CaseStatus::ZoneTruncated));
@@ -37,6 +38,7 @@ tables::CaseStatus case_status(SolveStatus status) noexcept {
   switch (status) {
     case SolveStatus::Converged: return CaseStatus::Converged;
     case SolveStatus::NoContact: return CaseStatus::NoContact;
+    case SolveStatus::UnderResolved: return CaseStatus::UnderResolved;
     case SolveStatus::MaxIterations: return CaseStatus::MaxIterations;
     case SolveStatus::InvalidInput: return CaseStatus::InvalidInput;
     case SolveStatus::ZoneTruncated: return CaseStatus::ZoneTruncated;
