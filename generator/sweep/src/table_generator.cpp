@@ -106,13 +106,14 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.side = std::make_unique<const SideGeometry>(place_profiles(config, *setup.wheel, *setup.rail));
   setup.E_star_Pa = effective_modulus(config.material, config.material);
   setup.options.method = config.method;
+  setup.auto_tolerance = config.least_model ? config.tolerance : 0.0;
   setup.options.mim1d.strip_width_m = config.strip_width_m;  // range checked by the config
   setup.options.reference_at_interpenetration_centre = config.reference_at_interpenetration_centre;
   setup.mode = config.mode;
   setup.load_kind = config.load_kind;
   setup.dy_axis_m = config.lateral_displacement_m;
   setup.mirrored = !setup.dy_axis_m.empty() && symmetric_axis(setup.dy_axis_m);
-  setup.warm_start = config.warm_start && config.method == NormalMethod::Mim1d;
+  setup.warm_start = config.warm_start && config.method == NormalMethod::Mim1d && !config.least_model;
   (void)StripKernel::instance();  // process-wide tables are built here, not inside a parallel region
   HertzCoefficients warm_up;
   (void)hertz_coefficients_tabulated(1.0, 2.0, warm_up);
@@ -136,7 +137,14 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
   const double shift = wheel == 1 ? -dy_m : dy_m, angle = wheel == 1 ? -roll.roll_rad : roll.roll_rad;
   CaseWheel out;
   try {
-    out.contact = warm_start == nullptr
+    out.choice.method = setup.options.method;
+    out.choice.strip_width_m = setup.options.mim1d.strip_width_m;
+    out.choice.solves = 1;
+    if (setup.auto_tolerance > 0.0)
+      out.contact = solve_wheel_contact_auto(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                             setup.options, setup.auto_tolerance, workspace, &out.choice);
+    else
+      out.contact = warm_start == nullptr
                       ? solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
                                             setup.options, workspace)
                       : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
