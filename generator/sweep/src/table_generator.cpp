@@ -311,7 +311,10 @@ SlotCase slot_case(const CaseWheel& solved) {
 // Status and patches of one wheel of one case in the slots `assignment` gives them.
 void store_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
                  std::size_t wheel, const CaseWheel& solved, const SlotAssignment& assignment) {
-  CaseStatus& status = table.status[table.wheel_index(i_dy, i_second, wheel)];
+  const std::size_t w = table.wheel_index(i_dy, i_second, wheel);
+  table.method[w] = static_cast<std::int8_t>(solved.choice.method);
+  table.strip_width_m[w] = solved.choice.strip_width_m;
+  CaseStatus& status = table.status[w];
   status = case_status(solved);
   if (!tables::is_success(status)) return;  // a failed case holds no patches
   if (assignment.overflow) {
@@ -541,13 +544,14 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
       sha256_hex(setup.rail->z_samples().data(), setup.rail->z_samples().size() * sizeof(double));
   text["rail_inclination"] = config.inclination_text;
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
-  text["method"] = method_name(config.method);
+  text["method"] = config.least_model ? "auto" : method_name(config.method);  // per case: /wheels/method
   text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;
   number["youngs_modulus_Pa"] = config.material.youngs_modulus_Pa;
   number["poisson_ratio"] = config.material.poisson_ratio;
-  number["strip_width_m"] = config.strip_width_m;
+  number["strip_width_m"] = config.strip_width_m;  // per case: /wheels/strip_width_m
+  if (config.least_model) number["tolerance"] = config.tolerance;
   number["gauge_m"] = config.track.gauge_m;
   number["nominal_radius_m"] = config.track.nominal_radius_m;
   table.integer_attributes["threads"] = plan.threads;

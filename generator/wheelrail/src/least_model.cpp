@@ -1,5 +1,6 @@
 #include "ctab/wheelrail/least_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -9,30 +10,49 @@ namespace ctab::gen {
 
 namespace {
 
-// Smallest width of the patches counted by the resolution rule [m]; 0 without such a patch.
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Smallest width of the patches the resolution rule counts [m]; 0 without such a patch.
 double smallest_patch_width(const WheelContact& contact) {
   std::vector<PatchExtent> extents;
   for (const ContactPatch& p : contact.patches) extents.push_back({p.s_max_m - p.s_min_m, 0.0, p.normal_force_N});
-  const double strips = min_resolved_strips(extents, ContactMethod::Mim1d, 1.0);
-  return std::isfinite(strips) ? strips : 0.0;
+  const double width_m = min_resolved_strips(extents, ContactMethod::Mim1d, 1.0);
+  return std::isfinite(width_m) ? width_m : 0.0;
 }
 
-double strips_in(const WheelContact& contact, double strip_width_m) {
-  double strips = 0.0;
-  for (const ContactPatch& p : contact.patches) strips += std::round((p.s_max_m - p.s_min_m) / strip_width_m);
-  return strips;
+double total_area(const WheelContact& contact) {
+  double area = 0.0;
+  for (const ContactPatch& p : contact.patches) area += p.area_m2;
+  return area;
+}
+
+double max_pressure(const WheelContact& contact) {
+  double pressure = 0.0;
+  for (const ContactPatch& p : contact.patches) pressure = std::max(pressure, p.max_pressure_Pa);
+  return pressure;
 }
 
 }  // namespace
 
-double auto_error_estimate(double strips) noexcept {
-  return strips > 0.0 ? kAutoErrorCoefficient / strips : std::numeric_limits<double>::infinity();
+double strips_in(const WheelContact& contact, double strip_width_m, bool squared) noexcept {
+  double strips = 0.0;
+  for (const ContactPatch& p : contact.patches) {
+    const double n = std::round((p.s_max_m - p.s_min_m) / strip_width_m);
+    strips += squared ? n * n : n;
+  }
+  return strips;
 }
 
-double auto_strip_width(double patch_width_m, double tolerance) noexcept {
-  for (const double width_m : kAutoStripWidths_m)
-    if (kAutoSafetyFactor * auto_error_estimate(patch_width_m / width_m) <= tolerance) return width_m;
-  return kAutoStripWidths_m.back();
+std::size_t auto_start_rung(double patch_width_m) noexcept {
+  for (std::size_t k = 1; k < kAutoStripWidths_m.size(); ++k)
+    if (patch_width_m / kAutoStripWidths_m[k] >= kMinResolvedStrips * (1.0 - 1e-9)) return k;
+  return kAutoStripWidths_m.size() - 1;
+}
+
+double richardson_error(const WheelContact& fine, const WheelContact& coarse) noexcept {
+  const double area = total_area(fine), pressure = max_pressure(fine);
+  if (!(area > 0.0 && pressure > 0.0 && total_area(coarse) > 0.0)) return kInfinity;
+  return std::max(std::abs(area - total_area(coarse)) / area, std::abs(pressure - max_pressure(coarse)) / pressure);
 }
 
 WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
@@ -40,33 +60,36 @@ WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, dou
                                       double tolerance, WheelContactWorkspace& workspace, AutoChoice* choice) {
   WheelRailOptions at = options;
   at.method = ContactMethod::Mim1d;
+  AutoChoice chosen;
   const auto solve_at = [&](double width_m) {
     at.mim1d.strip_width_m = width_m;
-    return solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, at, workspace);
-  };
-  AutoChoice chosen;
-  const double first_width_m = kAutoStripWidths_m.front();
-  WheelContact first = solve_at(first_width_m);
-  chosen.solves = 1;
-  chosen.strips_solved = strips_in(first, first_width_m);
-  double width_m = first_width_m;
-  if (first.status == SolveStatus::NoContact) {
-    // nothing to resolve: the first look is the answer
-  } else if (!is_success(first.status) || first.patches.empty()) {
-    width_m = kAutoFallbackWidth_m;
-  } else {
-    chosen.patch_width_m = smallest_patch_width(first);
-    width_m = auto_strip_width(chosen.patch_width_m, tolerance);
-  }
-  chosen.strip_width_m = width_m;
-  chosen.estimated_error = chosen.patch_width_m > 0.0 ? auto_error_estimate(chosen.patch_width_m / width_m) : 0.0;
-  if (width_m != first_width_m) {
-    first = solve_at(width_m);
+    WheelContact solved = solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, at, workspace);
     ++chosen.solves;
-    chosen.strips_solved += strips_in(first, width_m);
+    chosen.strips_solved += strips_in(solved, width_m);
+    chosen.influence_entries += strips_in(solved, width_m, true);
+    chosen.strip_width_m = width_m;
+    return solved;
+  };
+  WheelContact coarse = solve_at(kAutoStripWidths_m.front());
+  const bool usable = is_success(coarse.status) && coarse.status != SolveStatus::NoContact && !coarse.patches.empty();
+  if (coarse.status != SolveStatus::NoContact && !usable) coarse = solve_at(kAutoFallbackWidth_m);
+  if (!usable) {
+    if (choice != nullptr) *choice = chosen;
+    return coarse;
   }
-  if (choice != nullptr) *choice = chosen;
-  return first;
+  chosen.patch_width_m = smallest_patch_width(coarse);
+  std::size_t rung = auto_start_rung(chosen.patch_width_m);
+  if (rung > 1) coarse = solve_at(kAutoStripWidths_m[rung - 1]);
+  for (;; ++rung) {
+    WheelContact fine = solve_at(kAutoStripWidths_m[rung]);
+    chosen.estimated_error = richardson_error(fine, coarse);
+    const bool last = rung + 1 == kAutoStripWidths_m.size();
+    if (last || !is_success(fine.status) || kAutoSafetyFactor * chosen.estimated_error <= tolerance) {
+      if (choice != nullptr) *choice = chosen;
+      return fine;
+    }
+    coarse = std::move(fine);
+  }
 }
 
 }  // namespace ctab::gen
