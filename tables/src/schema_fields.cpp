@@ -62,8 +62,9 @@ std::vector<Field> schema_fields(Table& t) {
   method.int8s = &t.method;
   method.optional = true;
   method.missing_value = kMethodNotRecorded;
-  Field width = f64("/wheels/strip_width_m", "m", "strip width of that solve (the least model's choice with method auto)",
-                    Extent::PerWheel, t.strip_width_m);
+  Field width =
+      f64("/wheels/strip_width_m", "m", "strip width of that solve (the least model's choice with method auto)",
+          Extent::PerWheel, t.strip_width_m);
   width.optional = true;
   return {
       f64("/axes/lateral_displacement_m", "m", "wheelset lateral shift dy, + moves the right flange towards its rail",

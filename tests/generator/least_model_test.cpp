@@ -13,6 +13,7 @@
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/normal_contact.hpp"
 #include "ctab/contact/resolution.hpp"
+#include "ctab/sweep/accuracy_metrics.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "ctab/wheelrail/least_model.hpp"
 
@@ -40,23 +41,11 @@ SolveStatus solve_status(ContactMethod method, double force_N, double width_m) {
   return solve_normal_contact(ellipsoid(), options, Loading::normal_force(force_N)).status;
 }
 
-double total_area(const WheelContact& c) {
-  double a = 0.0;
-  for (const ContactPatch& p : c.patches) a += p.area_m2;
-  return a;
-}
-
-double max_pressure(const WheelContact& c) {
-  double p0 = 0.0;
-  for (const ContactPatch& p : c.patches) p0 = std::max(p0, p.max_pressure_Pa);
-  return p0;
-}
-
 TableConfig sweep_config(const std::string& solver) {
-  return parse_table_config(
-      "[solver]\nmode = \"wheel\"\n" + solver +
-          "\n[axes]\nlateral_displacement_m = { start = -3e-3, stop = 7.5e-3, step = 1.5e-3 }\nnormal_load_N = 78.5e3\n",
-      "least_model_test.toml");
+  return parse_table_config("[solver]\nmode = \"wheel\"\n" + solver +
+                                "\n[axes]\nlateral_displacement_m = { start = -3e-3, stop = 7.5e-3, step = 1.5e-3 "
+                                "}\nnormal_load_N = 78.5e3\n",
+                            "least_model_test.toml");
 }
 
 }  // namespace
@@ -99,11 +88,11 @@ TEST(UnderResolved, LadderReportsItOnASmallHertzPatch) {
 
 TEST(LeastModel, EstimatorPieces) {
   // start: the coarsest width with >= 8 strips across W, never the first look's 0.8 mm
-  EXPECT_EQ(auto_start_rung(20e-3), 1u);     // 0.4 mm: 50 strips
-  EXPECT_EQ(auto_start_rung(3.1e-3), 2u);    // 0.2 mm: 15 strips (0.4 mm: 7.75)
-  EXPECT_EQ(auto_start_rung(1.6e-3), 2u);    // 0.2 mm: 8 strips
-  EXPECT_EQ(auto_start_rung(1.0e-3), 3u);    // 0.1 mm: 10 strips
-  EXPECT_EQ(auto_start_rung(0.01e-3), 4u);   // the finest
+  EXPECT_EQ(auto_start_rung(20e-3), 1u);    // 0.4 mm: 50 strips
+  EXPECT_EQ(auto_start_rung(3.1e-3), 2u);   // 0.2 mm: 15 strips (0.4 mm: 7.75)
+  EXPECT_EQ(auto_start_rung(1.6e-3), 2u);   // 0.2 mm: 8 strips
+  EXPECT_EQ(auto_start_rung(1.0e-3), 3u);   // 0.1 mm: 10 strips
+  EXPECT_EQ(auto_start_rung(0.01e-3), 4u);  // the finest
   WheelContact fine, coarse;
   fine.patches.resize(1);
   coarse.patches.resize(1);
@@ -129,8 +118,9 @@ TEST(LeastModel, MeetsTheToleranceWithFewerStripsThanMim1dAtTwoTenths) {
     const std::string at = "dy " + std::to_string(dy * 1e3) + " mm, chosen " + std::to_string(a.choice.strip_width_m);
     ASSERT_TRUE(is_success(a.contact.status)) << at;
     ASSERT_EQ(r.contact.status, SolveStatus::Converged) << at;
-    EXPECT_LE(std::abs(total_area(a.contact) / total_area(r.contact) - 1.0), kTolerance) << at;
-    EXPECT_LE(std::abs(max_pressure(a.contact) / max_pressure(r.contact) - 1.0), kTolerance) << at;
+    const ContactSummary got = summarise(a.contact), want = summarise(r.contact);
+    EXPECT_LE(std::abs(got.area_m2 / want.area_m2 - 1.0), kTolerance) << at;
+    EXPECT_LE(std::abs(got.max_pressure_Pa / want.max_pressure_Pa - 1.0), kTolerance) << at;
     EXPECT_EQ(a.choice.method, ContactMethod::Mim1d);
     EXPECT_TRUE(std::find(kAutoStripWidths_m.begin(), kAutoStripWidths_m.end(), a.choice.strip_width_m) !=
                 kAutoStripWidths_m.end())

@@ -23,11 +23,8 @@ double min_resolved_strips(const std::vector<PatchExtent>& patches, ContactMetho
 
 std::vector<PatchExtent> patch_extents(const NormalSolution& solution) {
   std::vector<PatchExtent> extents;
-  for (const PatchSolution& p : solution.patches) {
-    double length_m = 0.0;
-    for (const StripSolution& s : p.strips) length_m = std::max(length_m, 2.0 * s.half_length_m);
-    extents.push_back({p.y_max_m - p.y_min_m, length_m, p.normal_force_N});
-  }
+  for (const PatchSolution& p : solution.patches)
+    extents.push_back(patch_extent(p.y_max_m - p.y_min_m, p.normal_force_N, p.strips));
   return extents;
 }
 

@@ -145,10 +145,10 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
                                              setup.options, setup.auto_tolerance, workspace, &out.choice);
     else
       out.contact = warm_start == nullptr
-                      ? solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
-                                            setup.options, workspace)
-                      : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
-                                            setup.options, workspace, *warm_start);
+                        ? solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                              setup.options, workspace)
+                        : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                              setup.options, workspace, *warm_start);
     if (!roll.converged) {
       if (warm_start != nullptr) warm_start->clear();
       out.contact.status = SolveStatus::MaxIterations;

@@ -20,16 +20,18 @@ double smallest_patch_width(const WheelContact& contact) {
   return std::isfinite(width_m) ? width_m : 0.0;
 }
 
-double total_area(const WheelContact& contact) {
-  double area = 0.0;
-  for (const ContactPatch& p : contact.patches) area += p.area_m2;
-  return area;
-}
+// Total area [m^2] and largest peak pressure [Pa] over the patches.
+struct Totals {
+  double area_m2 = 0.0, max_pressure_Pa = 0.0;
+};
 
-double max_pressure(const WheelContact& contact) {
-  double pressure = 0.0;
-  for (const ContactPatch& p : contact.patches) pressure = std::max(pressure, p.max_pressure_Pa);
-  return pressure;
+Totals totals(const WheelContact& contact) {
+  Totals t;
+  for (const ContactPatch& p : contact.patches) {
+    t.area_m2 += p.area_m2;
+    t.max_pressure_Pa = std::max(t.max_pressure_Pa, p.max_pressure_Pa);
+  }
+  return t;
 }
 
 }  // namespace
@@ -50,9 +52,10 @@ std::size_t auto_start_rung(double patch_width_m) noexcept {
 }
 
 double richardson_error(const WheelContact& fine, const WheelContact& coarse) noexcept {
-  const double area = total_area(fine), pressure = max_pressure(fine);
-  if (!(area > 0.0 && pressure > 0.0 && total_area(coarse) > 0.0)) return kInfinity;
-  return std::max(std::abs(area - total_area(coarse)) / area, std::abs(pressure - max_pressure(coarse)) / pressure);
+  const Totals f = totals(fine), c = totals(coarse);
+  if (!(f.area_m2 > 0.0 && f.max_pressure_Pa > 0.0 && c.area_m2 > 0.0)) return kInfinity;
+  return std::max(std::abs(f.area_m2 - c.area_m2) / f.area_m2,
+                  std::abs(f.max_pressure_Pa - c.max_pressure_Pa) / f.max_pressure_Pa);
 }
 
 WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,

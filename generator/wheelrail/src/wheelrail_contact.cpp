@@ -541,11 +541,8 @@ class WheelCase {
   // The loaded patches' extents in their contact planes (resolution.hpp).
   std::vector<PatchExtent> patch_extents() const {
     std::vector<PatchExtent> extents;
-    for (const ContactPatch& p : result_.patches) {
-      double length_m = 0.0;
-      for (const PatchStrip& st : p.strips) length_m = std::max(length_m, 2.0 * st.half_length_m);
-      extents.push_back({p.s_max_m - p.s_min_m, length_m, p.normal_force_N});
-    }
+    for (const ContactPatch& p : result_.patches)
+      extents.push_back(patch_extent(p.s_max_m - p.s_min_m, p.normal_force_N, p.strips));
     return extents;
   }
 

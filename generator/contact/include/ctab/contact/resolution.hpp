@@ -22,6 +22,15 @@ struct PatchExtent {
   double force_N = 0.0;   //!< normal force of the patch [N]
 };
 
+//! The extent of a patch `width_m` wide carrying `force_N` on `strips` (any type with half_length_m).
+template <class Strip>
+[[nodiscard]] PatchExtent patch_extent(double width_m, double force_N, const std::vector<Strip>& strips) noexcept {
+  PatchExtent extent{width_m, 0.0, force_N};
+  for (const Strip& s : strips)
+    extent.length_m = extent.length_m > 2.0 * s.half_length_m ? extent.length_m : 2.0 * s.half_length_m;
+  return extent;
+}
+
 //! True for the rungs whose patch is made of strips or elements of the strip width: kp, analyn, mim1d, bem2d.
 [[nodiscard]] bool discretises(ContactMethod method) noexcept;
 

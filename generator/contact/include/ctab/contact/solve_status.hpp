@@ -8,9 +8,7 @@ namespace ctab::gen {
 enum class SolveStatus : std::int8_t {
   Converged = 0,          //!< solved to tolerance
   NoContact = 1,          //!< the bodies do not touch (zero load); a valid outcome
-  //! solved, but a discretised rung (kp, analyn, mim1d, bem2d) has fewer than kMinResolvedStrips strips (elements)
-  //! across its smallest loaded patch (resolution.hpp): the numbers are there and finite, their error is not bounded
-  UnderResolved = 2,
+  UnderResolved = 2,      //!< solved, < 8 strips across the smallest loaded patch (resolution.hpp): usable, unbounded
   MaxIterations = -1,     //!< iteration limit reached; results are the last iterate, not to be trusted
   InvalidInput = -2,      //!< inputs out of the solver's domain (non-finite, non-positive curvature, ...)
   ZoneTruncated = -3,     //!< the contact reaches the end of the supplied gap data
