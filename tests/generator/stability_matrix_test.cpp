@@ -22,11 +22,13 @@ constexpr double kMaxSolveTime_s = 60.0;  // "no hang": far above the slowest so
 
 // The rows the matrix calls under-resolved (the reference's smallest loaded patch spans fewer than 8 strips) carry
 // the status where the rung discretises and found a contact; a margin of 25 % allows for the rung's own patch being
-// wider than the reference's. Hertz (one ellipse) never does.
+// wider than the reference's. Hertz (one ellipse) never does. Not on raw noisy profiles: there the 0.1 mm reference
+// splits the contact into narrow patches that the 0.2 mm rung sees as one wide patch (the status judges the rung's
+// own patches: 1-5 reference strips against a resolved rung patch in wheelrail_noise).
 void expect_resolution_status(const StabilityRow& r, const std::string& what) {
   const bool discretised = r.method != "hertz";
   if (!discretised) EXPECT_NE(r.status, SolveStatus::UnderResolved) << what;
-  const bool clearly_under = std::isfinite(r.area_error_rel) && r.reference_area_m2 > 0.0 &&
+  const bool clearly_under = r.scene != "wheelrail_noise" && std::isfinite(r.area_error_rel) && r.reference_area_m2 > 0.0 &&
                              r.min_patch_strips < 0.75 * kStabilityMinResolvedStrips;
   if (discretised && clearly_under && is_success(r.status) && r.status != SolveStatus::NoContact)
     EXPECT_EQ(r.status, SolveStatus::UnderResolved) << what << ", resolved strips " << r.min_patch_strips;
