@@ -28,8 +28,8 @@ constexpr double kMaxSolveTime_s = 60.0;  // "no hang": far above the slowest so
 void expect_resolution_status(const StabilityRow& r, const std::string& what) {
   const bool discretised = r.method != "hertz";
   if (!discretised) EXPECT_NE(r.status, SolveStatus::UnderResolved) << what;
-  const bool clearly_under = r.scene != "wheelrail_noise" && std::isfinite(r.area_error_rel) && r.reference_area_m2 > 0.0 &&
-                             r.min_patch_strips < 0.75 * kStabilityMinResolvedStrips;
+  const bool clearly_under = r.scene != "wheelrail_noise" && std::isfinite(r.area_error_rel) &&
+                             r.reference_area_m2 > 0.0 && r.min_patch_strips < 0.75 * kStabilityMinResolvedStrips;
   if (discretised && clearly_under && is_success(r.status) && r.status != SolveStatus::NoContact)
     EXPECT_EQ(r.status, SolveStatus::UnderResolved) << what << ", resolved strips " << r.min_patch_strips;
 }
