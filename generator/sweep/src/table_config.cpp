@@ -36,7 +36,7 @@ poisson_ratio = 0.3
 
 [solver]
 mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "wheel" (single wheel, roll 0)
-method = "mim1d"         # "hertz", "kp", "analyn", "mim1d", "bem2d" or "auto" (README "Method ladder")
+method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (README "Method ladder")
 strip_width_m = 0.2e-3
 reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
 warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; README "Speed")
