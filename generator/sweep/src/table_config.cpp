@@ -237,7 +237,7 @@ void read_solver(const Reader& r, TableConfig& c) {
   const std::optional<ContactMethod> parsed = c.least_model ? ContactMethod::Mim1d : parse_contact_method(method);
   if (!parsed)
     r.fail(*r.find("solver", "method"), "solver.method",
-           "expected one of " + contact_method_choices() + " or auto, got \"" + method + "\"");
+           "expected one of " + contact_method_choices() + ", auto, got \"" + method + "\"");
   c.mode = mode == "wheel" ? ContactMode::SingleWheel : ContactMode::Wheelset;
   c.method = *parsed;
   c.tolerance = r.number_in("solver", "tolerance", c.tolerance, 1e-6, 0.5, "a relative tolerance in [1e-06, 0.5]");
