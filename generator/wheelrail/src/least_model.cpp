@@ -87,7 +87,8 @@ WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, dou
     WheelContact fine = solve_at(kAutoStripWidths_m[rung]);
     chosen.estimated_error = richardson_error(fine, coarse);
     const bool last = rung + 1 == kAutoStripWidths_m.size();
-    if (last || !is_success(fine.status) || kAutoSafetyFactor * chosen.estimated_error <= tolerance) {
+    const bool resolved = fine.status != SolveStatus::UnderResolved;
+    if (last || !is_success(fine.status) || (resolved && kAutoSafetyFactor * chosen.estimated_error <= tolerance)) {
       if (choice != nullptr) *choice = chosen;
       return fine;
     }

@@ -12,8 +12,8 @@
 //!    error of the solution at w is estimated as e(w) = max(|A_w - A_2w| / A_w, |p_w - p_2w| / p_w), the estimate for
 //!    a first-order method (error proportional to w: err(w) = err(2w) - err(w)); MIM-1D's measured error on the
 //!    S1002/UIC60 sweep falls about as 1/n (0.8 mm: up to 27 % at n = 2 and 1.8 % at n = 24). The solution at w is
-//!    taken when kAutoSafetyFactor * e(w) <= T; else w is halved, down to the finest ladder width, which is taken
-//!    whatever its estimate.
+//!    taken when kAutoSafetyFactor * e(w) <= T and it is not under-resolved (every patch with >= 5 % of the force
+//!    on >= 8 strips); else w is halved, down to the finest ladder width, which is taken whatever its estimate.
 //! A case the first look cannot solve is solved once at kAutoFallbackWidth_m (as `--method mim1d` would); a
 //! first look without contact is the answer.
 #include <array>
