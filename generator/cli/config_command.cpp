@@ -25,7 +25,8 @@ int run_config(const ConfigOptions& o) {
   const gen::TableConfig config = gen::read_table_config(o.path);
   std::printf("%s: valid; %zu lateral shifts x %zu %s, %s mode, %s\n", o.path.c_str(),
               config.lateral_displacement_m.size(), config.load_values.size(), gen::load_axis_name(config.load_kind),
-              config.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel", gen::method_name(config.method));
+              config.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel",
+              config.least_model ? "auto" : gen::method_name(config.method));
   return 0;
 }
 

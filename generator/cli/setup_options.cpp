@@ -132,10 +132,18 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
   }
   if (groups & kSolver) {
     add(app.add_option_function<std::string>(
-               "--method", [&c](const std::string& method) { c.method = *gen::parse_contact_method(method); },
-               "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices())
-            ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d", "bem2d"}))
+               "--method",
+               [&c](const std::string& method) {
+                 c.least_model = method == "auto";
+                 c.method = c.least_model ? gen::NormalMethod::Mim1d : *gen::parse_contact_method(method);
+               },
+               "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices() +
+                   ", or auto (the least model: MIM-1D at the coarsest strip width within --tolerance)")
+            ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d", "bem2d", "auto"}))
             ->default_str(gen::method_name(c.method)));
+    add(app.add_option("--tolerance", c.tolerance, "--method auto: relative error tolerance in area and max pressure")
+            ->capture_default_str()
+            ->check(finite_range(1e-6, 0.5, "")));
     add(app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
             ->capture_default_str()
             ->check(finite_range(kMinStripWidth_m, kMaxStripWidth_m, "m")));

@@ -65,7 +65,7 @@ void print_summary(const gen::TableConfig& config, const gen::CaseSolution& solu
 
 nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& solution) {
   nlohmann::json json = {{"mode", mode_name(config.mode)},
-                         {"method", method_name(config.method)},
+                         {"method", config.least_model ? "auto" : method_name(config.method)},
                          {"surface", std::string(gen::surface_name(config.surface))},
                          {"dy_m", solution.dy_m},
                          {"roll_rad", solution.roll.roll_rad},
@@ -79,6 +79,7 @@ nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& 
     wheel["dy_m"] = solution.dy_m;  // the wheelset's shift and roll, not the left side's mirrored frame
     wheel["roll_rad"] = solution.roll.roll_rad;
     wheel["status"] = status_text(solution.wheels[w]);
+    wheel["strip_width_m"] = solution.wheels[w].choice.strip_width_m;  // the least model's choice with --method auto
   }
   return json;
 }

@@ -22,7 +22,7 @@ namespace {
 
 //! One line of the printed summary: a scene and a method over its cases.
 struct SummaryLine {
-  int cases = 0, converged = 0, no_contact = 0, failed = 0, claimed = 0, broken = 0, non_finite = 0;
+  int cases = 0, converged = 0, no_contact = 0, under_resolved = 0, failed = 0, claimed = 0, broken = 0, non_finite = 0;
   double worst_error = 0.0, worst_time_s = 0.0;
   std::map<std::string, int> failures;  // status name -> count
 };
@@ -37,6 +37,7 @@ void print_summary(const std::vector<gen::StabilityRow>& rows) {
     ++l.cases;
     l.converged += r.status == gen::SolveStatus::Converged;
     l.no_contact += r.status == gen::SolveStatus::NoContact;
+    l.under_resolved += r.status == gen::SolveStatus::UnderResolved;
     if (!gen::is_success(r.status)) {
       ++l.failed;
       ++l.failures[gen::status_name(r.status)];
@@ -50,16 +51,16 @@ void print_summary(const std::vector<gen::StabilityRow>& rows) {
       l.broken += e > gen::stability_error_bound(r) ? 1 : 0;
     }
   }
-  std::printf("%-22s %-7s %5s %5s %5s %6s %7s %6s %9s %9s  %s\n", "scene", "method", "cases", "conv", "noc", "failed",
-              "claimed", "broken", "worst err", "worst s", "failures");
+  std::printf("%-22s %-7s %5s %5s %5s %5s %6s %7s %6s %9s %9s  %s\n", "scene", "method", "cases", "conv", "noc",
+              "under", "failed", "claimed", "broken", "worst err", "worst s", "failures");
   for (const auto& key : order) {
     const SummaryLine& l = lines[key];
     std::string failures;
     for (const auto& [name, count] : l.failures) failures += name + " x" + std::to_string(count) + " ";
     if (l.non_finite) failures += "NON-FINITE x" + std::to_string(l.non_finite);
-    std::printf("%-22s %-7s %5d %5d %5d %6d %7d %6d %8.1f%% %9.2e  %s\n", key.first.c_str(), key.second.c_str(),
-                l.cases, l.converged, l.no_contact, l.failed, l.claimed, l.broken, 100.0 * l.worst_error,
-                l.worst_time_s, failures.c_str());
+    std::printf("%-22s %-7s %5d %5d %5d %5d %6d %7d %6d %8.1f%% %9.2e  %s\n", key.first.c_str(), key.second.c_str(),
+                l.cases, l.converged, l.no_contact, l.under_resolved, l.failed, l.claimed, l.broken,
+                100.0 * l.worst_error, l.worst_time_s, failures.c_str());
   }
 }
 

@@ -9,7 +9,7 @@ namespace ctab::lookup {
 namespace {
 
 constexpr int kCaseStatusMin = -6;          // tables::kCaseStatusMin
-constexpr int kCaseStatusMax = 1;           // tables::kCaseStatusMax
+constexpr int kCaseStatusMax = 2;           // tables::kCaseStatusMax
 constexpr double kUniformTolerance = 1e-9;  // relative to the dy span
 
 LoadResult fail(ctab_status status, const std::string& what) { return {status, what}; }

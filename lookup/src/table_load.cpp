@@ -13,7 +13,7 @@ namespace {
 
 constexpr std::size_t kAlignBytes = 64;  // a cache line
 
-bool succeeded(std::int8_t case_status) noexcept { return case_status >= 0; }  // converged or no contact
+bool succeeded(std::int8_t case_status) noexcept { return case_status >= 0; }  // converged, no contact, under-resolved
 
 //! Fritsch-Carlson slope at a node from the secants of its interpolable neighbouring cells (uniform spacing:
 //! the harmonic mean, 0 at an extremum; one-sided: that cell's secant, which keeps the cubic monotone).

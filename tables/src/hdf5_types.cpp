@@ -58,13 +58,15 @@ hid_t make_jump_file_type() noexcept {
 
 bool same_enum(hid_t type, hid_t expected) noexcept {
   if (H5Tget_class(type) != H5T_ENUM || H5Tget_size(type) != 1) return false;
+  // Every member of the file's type is one of ours with the same value: tables written before a status was
+  // appended (e.g. under-resolved, 2) have fewer members and stay readable.
   const int members = H5Tget_nmembers(type);
-  if (members != H5Tget_nmembers(expected)) return false;
+  if (members <= 0 || members > H5Tget_nmembers(expected)) return false;
   for (int i = 0; i < members; ++i) {
-    char* name = H5Tget_member_name(expected, static_cast<unsigned>(i));
+    char* name = H5Tget_member_name(type, static_cast<unsigned>(i));
     std::int8_t want = 0, got = 0;
-    const bool ok = name != nullptr && H5Tget_member_value(expected, static_cast<unsigned>(i), &want) >= 0 &&
-                    H5Tenum_valueof(type, name, &got) >= 0 && want == got;
+    const bool ok = name != nullptr && H5Tget_member_value(type, static_cast<unsigned>(i), &got) >= 0 &&
+                    H5Tenum_valueof(expected, name, &want) >= 0 && want == got;
     H5free_memory(name);
     if (!ok) return false;
   }

@@ -30,7 +30,8 @@ struct JumpRecord {
 [[nodiscard]] hid_t make_jump_type(hid_t kind_type) noexcept;
 //! The file type: the packed copy of make_jump_type(make_jump_kind_type()).
 [[nodiscard]] hid_t make_jump_file_type() noexcept;
-//! True if `type` is a 1-byte enum whose members are exactly those of `expected` with the same values.
+//! True if `type` is a 1-byte enum whose members are all members of `expected` with the same values (a table written
+//! before a status was appended has fewer).
 [[nodiscard]] bool same_enum(hid_t type, hid_t expected) noexcept;
 //! Variable-length UTF-8 string type (h5py reads it as str).
 [[nodiscard]] hid_t make_utf8_type() noexcept;

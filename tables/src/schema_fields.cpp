@@ -1,17 +1,21 @@
 // The array datasets of schema 2 (tables/README.md lists the same, with the reasons).
 #include "schema_fields.hpp"
 
+#include <algorithm>
+
 namespace ctab::tables::detail {
 
 void* Field::data() const noexcept {
   if (doubles != nullptr) return doubles->data();
   if (bytes != nullptr) return bytes->data();
+  if (int8s != nullptr) return int8s->data();
   return statuses->data();
 }
 
 std::size_t Field::size() const noexcept {
   if (doubles != nullptr) return doubles->size();
   if (bytes != nullptr) return bytes->size();
+  if (int8s != nullptr) return int8s->size();
   return statuses->size();
 }
 
@@ -19,6 +23,12 @@ void Field::resize(std::size_t n) const {
   if (doubles != nullptr) doubles->assign(n, 0.0);
   if (bytes != nullptr) bytes->assign(n, 0);
   if (statuses != nullptr) statuses->assign(n, CaseStatus::Converged);
+  if (int8s != nullptr) int8s->assign(n, 0);
+}
+
+void Field::fill_missing() const {
+  if (doubles != nullptr) std::fill(doubles->begin(), doubles->end(), missing_value);
+  if (int8s != nullptr) std::fill(int8s->begin(), int8s->end(), static_cast<std::int8_t>(missing_value));
 }
 
 namespace {
@@ -45,6 +55,17 @@ std::vector<Field> schema_fields(Table& t) {
                 Extent::PerSlot, Element::Presence};
   present.bytes = &p.present;
   present.patch = true;
+  Field method{"/wheels/method", "-",
+               "normal-contact method that solved the case, a ContactMethod value (0 mim1d, 1 hertz, 2 kp, 3 analyn, "
+               "4 bem2d); the least model's choice with method auto",
+               Extent::PerWheel, Element::Int8};
+  method.int8s = &t.method;
+  method.optional = true;
+  method.missing_value = kMethodNotRecorded;
+  Field width =
+      f64("/wheels/strip_width_m", "m", "strip width of that solve (the least model's choice with method auto)",
+          Extent::PerWheel, t.strip_width_m);
+  width.optional = true;
   return {
       f64("/axes/lateral_displacement_m", "m", "wheelset lateral shift dy, + moves the right flange towards its rail",
           Extent::DyAxis, t.lateral_displacement_m),
@@ -54,6 +75,8 @@ std::vector<Field> schema_fields(Table& t) {
       f64("/cases/rolling_radius_difference_m", "m", "r_right - r_left at the rigid contact points", Extent::PerCase,
           t.rolling_radius_difference_m),
       status,
+      method,
+      width,
       present,
       f64("/patches/normal_force_N", "N", "resultant normal force", Extent::PerSlot, p.normal_force_N, kPositive),
       f64("/patches/force_lateral_N", "N", "lateral force on the rail in the side frame, + towards the field side",

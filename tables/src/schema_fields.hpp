@@ -10,7 +10,7 @@
 
 namespace ctab::tables::detail {
 
-enum class Element { Float64, Presence, Status };
+enum class Element { Float64, Presence, Status, Int8 };
 
 //! Which axes a dataset spans.
 enum class Extent { DyAxis, SecondAxis, PerCase, PerWheel, PerSlot, PerSample };
@@ -24,6 +24,11 @@ struct Field {
   std::vector<double>* doubles = nullptr;       //!< Float64
   std::vector<std::uint8_t>* bytes = nullptr;   //!< Presence
   std::vector<CaseStatus>* statuses = nullptr;  //!< Status
+  std::vector<std::int8_t>* int8s = nullptr;    //!< Int8
+  //! Optional on read: a table without the dataset gets `missing_value` everywhere (datasets added to schema 2
+  //! later; readers of older tables keep working).
+  bool optional = false;
+  double missing_value = 0.0;
   //! Constraint on present patches (PerSlot and PerSample patch quantities): 0 none, 1 >= 0, 2 > 0.
   int sign = 0;
   //! True for patch quantities (must be 0 where the slot is empty).
@@ -32,6 +37,7 @@ struct Field {
   [[nodiscard]] void* data() const noexcept;
   [[nodiscard]] std::size_t size() const noexcept;
   void resize(std::size_t n) const;
+  void fill_missing() const;  //!< every element missing_value
 };
 
 //! Every array dataset of the schema, bound to the members of `table`.

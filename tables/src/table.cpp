@@ -9,6 +9,7 @@ const char* case_status_name(CaseStatus status) noexcept {
   switch (status) {
     case CaseStatus::Converged: return "converged";
     case CaseStatus::NoContact: return "no-contact";
+    case CaseStatus::UnderResolved: return "under-resolved";
     case CaseStatus::MaxIterations: return "max-iterations";
     case CaseStatus::InvalidInput: return "invalid-input";
     case CaseStatus::ZoneTruncated: return "zone-truncated";

@@ -153,6 +153,7 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
   double bytes = 0.0;
   const Handle status_type(detail::make_case_status_type(), H5Tclose);
   for (const detail::Field& f : detail::schema_fields(table)) {
+    if (f.optional && H5Lexists(file, f.path, H5P_DEFAULT) <= 0) continue;  // an older table: filled on read
     const std::vector<hsize_t> want =
         detail::shape_of(f.extent, lengths[0], lengths[1], table.n_slots, table.strip_samples);
     std::vector<hsize_t> dims;
@@ -166,7 +167,7 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
     const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
     const Handle type(H5Dget_type(dataset.get()), H5Tclose);
     const bool type_ok = f.element == detail::Element::Float64 ? H5Tget_class(type.get()) == H5T_FLOAT
-                         : f.element == detail::Element::Presence
+                         : f.element == detail::Element::Presence || f.element == detail::Element::Int8
                              ? H5Tget_class(type.get()) == H5T_INTEGER && H5Tget_size(type.get()) == 1
                              : detail::same_enum(type.get(), status_type.get());
     if (!type_ok)
@@ -185,11 +186,16 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
 
 TableResult read_arrays(hid_t file, const std::string& path, Table& table) {
   for (const detail::Field& f : detail::schema_fields(table)) {
+    if (f.optional && H5Lexists(file, f.path, H5P_DEFAULT) <= 0) {
+      f.fill_missing();
+      continue;
+    }
     const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
     // Status: read with the file's own enum type (checked equal to ours), so unknown values arrive unchanged.
     const Handle file_type(H5Dget_type(dataset.get()), H5Tclose);
     const hid_t memory = f.element == detail::Element::Float64    ? H5T_NATIVE_DOUBLE
                          : f.element == detail::Element::Presence ? H5T_NATIVE_UINT8
+                         : f.element == detail::Element::Int8     ? H5T_NATIVE_INT8
                                                                   : file_type.get();
     if (f.size() > 0 && H5Dread(dataset.get(), memory, H5S_ALL, H5S_ALL, H5P_DEFAULT, f.data()) < 0)
       return fail(TableStatus::NotATable, path + ": cannot read " + f.path + " (truncated or damaged)");

@@ -51,6 +51,12 @@ TableResult check_field(const Field& f, const Table& t, const std::string& path)
         return invalid(path, f, shape, i, "unknown case status " + std::to_string(static_cast<int>((*f.statuses)[i])));
     return {};
   }
+  if (f.element == Element::Int8) {  // /wheels/method: a ContactMethod value or kMethodNotRecorded
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if ((*f.int8s)[i] < kMethodNotRecorded || (*f.int8s)[i] > kMaxMethodValue)
+        return invalid(path, f, shape, i, "method " + std::to_string((*f.int8s)[i]) + " (must be -1 to 4)");
+    return {};
+  }
   if (f.element == Element::Presence) {
     for (std::size_t i = 0; i < f.size(); ++i)
       if ((*f.bytes)[i] > 1)

@@ -63,6 +63,7 @@ TableResult write_arrays(hid_t file, const Table& const_table, const std::string
     if (count != f.size()) return fail(path + ": " + f.path + ": size does not match its shape");
     hid_t file_type = H5T_IEEE_F64LE, memory_type = H5T_NATIVE_DOUBLE;
     if (f.element == detail::Element::Presence) file_type = H5T_STD_U8LE, memory_type = H5T_NATIVE_UINT8;
+    if (f.element == detail::Element::Int8) file_type = H5T_STD_I8LE, memory_type = H5T_NATIVE_INT8;
     if (f.element == detail::Element::Status) file_type = status_file.get(), memory_type = status_memory.get();
     const bool second = f.extent == detail::Extent::SecondAxis;
     if (!write_dataset(file, f.path, shape, file_type, memory_type, f.data(),

@@ -46,7 +46,7 @@ EOF
       "$ctab" generate "$config" -o "$work/table.h5" --quiet > /dev/null 2> "$work/stderr"
       set -e
       counts=$("$ctab" inspect "$work/table.h5" | sed -n 's/^status counts (case x wheel): //p')
-      failed=$(awk '{ for (i = 1; i < NF; i += 2) if ($i != "converged" && $i != "no-contact") s += $(i + 1) } END { print s + 0 }' <<< "$counts")
+      failed=$(awk '{ for (i = 1; i < NF; i += 2) if ($i != "converged" && $i != "no-contact" && $i != "under-resolved") s += $(i + 1) } END { print s + 0 }' <<< "$counts")
       cases=$(awk '{ for (i = 2; i <= NF; i += 2) s += $i } END { print s + 0 }' <<< "$counts")
       printf '%-10s %-8s %-15s %8d wheel cases, %5d failed   (%s)\n' "$set" "$mode" "$kind" "$cases" "$failed" "$counts"
       total_failed=$((total_failed + failed))

@@ -50,7 +50,7 @@ TEST(CliMethod, UnknownMethodIsAnInputError) {
     (void)ctab::gen::read_table_config(path);
     ADD_FAILURE() << "no error for method = \"stripes\"";
   } catch (const ctab::gen::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("expected one of hertz, kp, analyn, mim1d, bem2d, got \"stripes\""),
+    EXPECT_NE(std::string(e.what()).find("expected one of hertz, kp, analyn, mim1d, bem2d, auto, got \"stripes\""),
               std::string::npos)
         << e.what();
     EXPECT_EQ(e.line(), 3u);

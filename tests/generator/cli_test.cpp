@@ -133,8 +133,8 @@ TEST(CliOptions, HelpShowsTheSharedDefaults) {
       EXPECT_NE(run.output.find(text), std::string::npos) << command << ": " << text << "\n" << run.output;
   }
   const Combined solve = run_ctab("solve --help");
-  for (const char* text :
-       {"--youngs-modulus", "--poisson-ratio", "--strip-width", "--method TEXT:{hertz,kp,analyn,mim1d,bem2d}=mim1d"})
+  for (const char* text : {"--youngs-modulus", "--poisson-ratio", "--strip-width",
+                           "--method TEXT:{hertz,kp,analyn,mim1d,bem2d,auto}=mim1d", "--tolerance"})
     EXPECT_NE(solve.output.find(text), std::string::npos) << text;
   EXPECT_EQ(solve.output.find("--E "), std::string::npos) << "the alias --E is hidden";
   EXPECT_EQ(solve.output.find("--nu "), std::string::npos) << "the alias --nu is hidden";

@@ -88,7 +88,10 @@ class FlangeReference : public ctab::test::ManchesterSuite<Case> {
     const WheelContact contact =
         solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
                             vertical ? LoadKind::VerticalForce : LoadKind::NormalForce, kLoad_N, centred_options());
-    EXPECT_EQ(contact.status, SolveStatus::Converged) << contact.detail;
+    // the flank patch (dy 7.5 mm, about 1.5 mm wide) spans 7-8 strips of 0.2 mm: under-resolved (usable) below 8
+    const bool flank = c.dy_mm > 7.0;
+    EXPECT_TRUE(contact.status == SolveStatus::Converged || (flank && contact.status == SolveStatus::UnderResolved))
+        << status_name(contact.status) << " " << contact.detail;
     Errors e;
     e.patches = static_cast<int>(contact.patches.size());
     if (contact.patches.empty()) return e;

@@ -121,7 +121,8 @@ TEST(SlotAssignment, HollowWornWheelSlotsFollowTheContacts) {
   const std::size_t wheel = 0;  // single-wheel mode: the right wheel
   std::size_t two_contact_cells = 0;
   for (std::size_t i = 0; i + 1 < table.lateral_displacement_m.size(); ++i) {
-    ASSERT_EQ(table.status[table.wheel_index(i, 0, wheel)], CaseStatus::Converged) << "dy index " << i;
+    const CaseStatus status = table.status[table.wheel_index(i, 0, wheel)];  // under-resolved: usable, patches stored
+    ASSERT_TRUE(status == CaseStatus::Converged || status == CaseStatus::UnderResolved) << "dy index " << i;
     for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
       const std::size_t low = table.patch_index(i, 0, wheel, slot), high = table.patch_index(i + 1, 0, wheel, slot);
       if (!table.patch.present[low] || !table.patch.present[high]) continue;

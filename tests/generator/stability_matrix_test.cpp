@@ -20,6 +20,26 @@ namespace {
 
 constexpr double kMaxSolveTime_s = 60.0;  // "no hang": far above the slowest solve (bem2d, about 2 s)
 
+// The rows the matrix calls under-resolved (the reference's smallest loaded patch spans fewer than 8 strips) carry
+// the status where the rung discretises and found a contact; a margin of 25 % allows for the rung's own patch being
+// wider than the reference's. Hertz (one ellipse) never does. Not on raw noisy profiles: there the 0.1 mm reference
+// splits the contact into narrow patches that the 0.2 mm rung sees as one wide patch (the status judges the rung's
+// own patches: 1-5 reference strips against a resolved rung patch in wheelrail_noise).
+void expect_resolution_status(const StabilityRow& r, const std::string& what) {
+  const bool discretised = r.method != "hertz";
+  if (!discretised) EXPECT_NE(r.status, SolveStatus::UnderResolved) << what;
+  const bool clearly_under = r.scene != "wheelrail_noise" && std::isfinite(r.area_error_rel) &&
+                             r.reference_area_m2 > 0.0 && r.min_patch_strips < 0.75 * kStabilityMinResolvedStrips;
+  if (discretised && clearly_under && is_success(r.status) && r.status != SolveStatus::NoContact)
+    EXPECT_EQ(r.status, SolveStatus::UnderResolved) << what << ", resolved strips " << r.min_patch_strips;
+}
+
+int under_resolved_rows(const std::vector<StabilityRow>& rows) {
+  int n = 0;
+  for (const StabilityRow& r : rows) n += r.status == SolveStatus::UnderResolved ? 1 : 0;
+  return n;
+}
+
 void expect_honest(const std::vector<StabilityRow>& rows) {
   ASSERT_FALSE(rows.empty());
   for (const StabilityRow& r : rows) {
@@ -28,7 +48,8 @@ void expect_honest(const std::vector<StabilityRow>& rows) {
     EXPECT_LT(r.time_s, kMaxSolveTime_s) << what;
     EXPECT_GE(r.iterations, 0) << what;
     const int s = static_cast<int>(r.status);
-    EXPECT_TRUE(s >= -4 && s <= 1) << what << ": unknown status " << s;
+    EXPECT_TRUE(s >= -4 && s <= 2) << what << ": unknown status " << s;
+    expect_resolution_status(r, what);
     if (r.status == SolveStatus::NoContact && std::isfinite(r.force_error_rel)) {
       EXPECT_DOUBLE_EQ(r.force_error_rel, 1.0) << what << ": no-contact must carry no force";
     }
@@ -54,7 +75,8 @@ TEST(StabilityMatrix, QuickSubsetIsFiniteAndHonest) {
   options.scenes = {"elongated", "load", "barely_touching", "wheelrail_regions", "wheelrail_hollow"};
   const std::vector<StabilityRow> rows = run_stability_matrix(options);
   expect_honest(rows);
-  EXPECT_GE(claimed_rows(rows), 10);  // the claims are exercised, not vacuous
+  EXPECT_GE(claimed_rows(rows), 10);        // the claims are exercised, not vacuous
+  EXPECT_GE(under_resolved_rows(rows), 3);  // F = 1 N: kp, analyn and mim1d report under-resolved
 }
 
 // The claims: where they apply and their bounds (README "Stability where methods fail").

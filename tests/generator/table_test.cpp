@@ -246,7 +246,8 @@ double identity_residual(const Table& table, bool vertical) {
   for (std::size_t i = 0; i < table.n_dy(); ++i)
     for (std::size_t j = 0; j < table.n_second(); ++j)
       for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel) {
-        EXPECT_EQ(table.status[table.wheel_index(i, j, wheel)], CaseStatus::Converged)
+        const CaseStatus status = table.status[table.wheel_index(i, j, wheel)];
+        EXPECT_TRUE(status == CaseStatus::Converged || status == CaseStatus::UnderResolved)
             << "dy " << i << " wheel " << wheel;
         double sum = 0.0;
         for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
@@ -270,6 +271,17 @@ TEST(Table, VerticalLoadIdentityOnEveryCaseOfTheDefaultTable) {
   ASSERT_EQ(table.cases(), 241u);
   const double residual = identity_residual(table, true);
   std::printf("default table: max relative residual of the vertical-load identity %.3g\n", residual);
+  // Under-resolved (fewer than 8 strips of 0.2 mm across a patch with >= 5 % of the load): only the four cases at
+  // |dy| = 4.7 and 4.8 mm, where the flange patch appears with 5-14 % of the load on 5-7 strips.
+  std::size_t under_resolved = 0;
+  for (std::size_t i = 0; i < table.n_dy(); ++i)
+    for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel)
+      if (table.status[table.wheel_index(i, 0, wheel)] == CaseStatus::UnderResolved) {
+        ++under_resolved;
+        const double dy_mm = std::abs(table.lateral_displacement_m[i]) * 1e3;
+        EXPECT_TRUE(dy_mm > 4.65 && dy_mm < 4.85) << "under-resolved at dy " << dy_mm << " mm";
+      }
+  EXPECT_EQ(under_resolved, 4u);
   EXPECT_LE(residual, 1e-9);
   // The default table passes the reader's validation (what `ctab inspect` reports as valid).
   const std::string path = temp_path("default.h5");

@@ -94,6 +94,20 @@ TEST(LookupQuery, FailedNeighbourIsNeverUsed) {
   EXPECT_EQ(query(table, -8.3e-3, 0.0, 1).worst_case_status, 0) << "the left wheel did not fail";
 }
 
+TEST(LookupQuery, UnderResolvedNeighbourIsUsedAndReported) {
+  TableData data = make_synthetic();
+  const std::size_t i = 4;  // -8 mm, right wheel: a quality warning (tables::CaseStatus::UnderResolved), not a failure
+  data.case_status[data.case_index(i, 0, 0)] = 2;
+  const Table table = load(data);
+  EXPECT_EQ(table.rule(3, 0, 0, 0), CellRule::Interpolate);
+  EXPECT_EQ(table.rule(4, 0, 0, 0), CellRule::Interpolate);
+  const ctab_result r = query(table, -8.3e-3, 0.0, 0);
+  EXPECT_EQ(r.status, CTAB_OK);
+  EXPECT_NEAR(r.patch[0].q[CTAB_NORMAL_FORCE_N], synthetic_value(0, 0, 0, -8.3e-3, 60e3), 1e-9);
+  EXPECT_EQ(r.neighbour_status[1], 2) << "the upper neighbour (-8 mm) is reported under-resolved";
+  EXPECT_EQ(r.worst_case_status, 0) << "worst is the most severe: no failed neighbour";
+}
+
 TEST(LookupQuery, SecondAxisBlendsRowsOnlyWhereBothHaveThePatch) {
   const TableData data = make_synthetic({.n_second = 3, .second_row_flange_later = true});
   const Table table = load(data);

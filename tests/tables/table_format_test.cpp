@@ -42,6 +42,10 @@ Table synthetic_table() {
   for (std::size_t i = 0; i < t.n_dy(); ++i)
     for (std::size_t j = 0; j < t.n_second(); ++j) {
       t.roll_rad[i * t.n_second() + j] = 1e-4 * static_cast<double>(i);
+      for (std::size_t wheel = 0; wheel < kWheels; ++wheel) {  // the least model's choices (ladder widths)
+        t.method[t.wheel_index(i, j, wheel)] = static_cast<std::int8_t>(i % 2 == 0 ? 0 : 4);
+        t.strip_width_m[t.wheel_index(i, j, wheel)] = 0.8e-3 / static_cast<double>(1u << (i % 4));
+      }
       for (std::size_t wheel = 0; wheel < kWheels; ++wheel)
         for (std::size_t slot = 0; slot < 2; ++slot) {
           if (slot == 1 && i < 3) continue;
@@ -76,6 +80,7 @@ Table synthetic_table() {
           }
         }
     }
+  t.status[t.wheel_index(3, 0, 1)] = CaseStatus::UnderResolved;  // usable: its patches stay
   t.jumps = detect_jumps(t);
   t.text_attributes["generator"] = "ctab";
   t.text_attributes["note"] = "UTF-8: 0.1 µm — Zürich";
@@ -164,6 +169,8 @@ TEST(TableFormat, RoundTripKeepsEveryValue) {
   EXPECT_TRUE(bitwise_equal(back.second_axis, t.second_axis));
   EXPECT_TRUE(bitwise_equal(back.roll_rad, t.roll_rad));
   EXPECT_TRUE(bitwise_equal(back.status, t.status));
+  EXPECT_TRUE(bitwise_equal(back.method, t.method));
+  EXPECT_TRUE(bitwise_equal(back.strip_width_m, t.strip_width_m));
   EXPECT_TRUE(bitwise_equal(back.patch.present, t.patch.present));
   EXPECT_TRUE(bitwise_equal(back.patch.force_lateral_N, t.patch.force_lateral_N));
   EXPECT_TRUE(bitwise_equal(back.patch.force_vertical_N, t.patch.force_vertical_N));
@@ -201,6 +208,53 @@ TEST(TableFormat, DetectJumpsFindsAppearAndMove) {
   for (const Jump& j : jumps)
     moved |= j.kind == JumpKind::Moves && j.i_dy == 4 && j.slot == 0 && j.wheel == 0 && j.i_second == 0;
   EXPECT_TRUE(moved);
+}
+
+// Tables written before /wheels/method and /wheels/strip_width_m existed, and before under-resolved (2) was
+// appended to the status enum, still read: the method reads as not recorded, the width as 0.
+TEST(TableFormat, OlderTableWithoutMethodDatasetsAndUnderResolvedReads) {
+  const std::string path = temp_path("older.h5");
+  Table older = synthetic_table();
+  older.status[older.wheel_index(3, 0, 1)] = CaseStatus::Converged;
+  ASSERT_TRUE(write_table(older, path).ok());
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  ASSERT_GE(H5Ldelete(file, "/wheels/method", H5P_DEFAULT), 0);
+  ASSERT_GE(H5Ldelete(file, "/wheels/strip_width_m", H5P_DEFAULT), 0);
+  ASSERT_GE(H5Ldelete(file, "/wheels/status", H5P_DEFAULT), 0);
+  const hid_t type = H5Tenum_create(H5T_NATIVE_INT8);  // the status enum as schema 2 had it: values -6 .. 1
+  for (int v = kCaseStatusMin; v <= 1; ++v) {
+    const auto value = static_cast<std::int8_t>(v);
+    H5Tenum_insert(type, case_status_name(static_cast<CaseStatus>(v)), &value);
+  }
+  const hsize_t dims[3] = {older.n_dy(), older.n_second(), kWheels};
+  const hid_t space = H5Screate_simple(3, dims, nullptr);
+  const hid_t dataset = H5Dcreate2(file, "/wheels/status", type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, older.status.data()), 0);
+  H5Dclose(dataset);
+  H5Sclose(space);
+  H5Tclose(type);
+  H5Fclose(file);
+  Table back;
+  const TableResult r = read_table(path, back);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_TRUE(bitwise_equal(back.status, older.status));
+  ASSERT_EQ(back.method.size(), older.status.size());
+  for (std::size_t w = 0; w < back.method.size(); ++w) {
+    EXPECT_EQ(back.method[w], kMethodNotRecorded);
+    EXPECT_EQ(back.strip_width_m[w], 0.0);
+  }
+}
+
+TEST(TableFormat, MethodOutOfRangeIsRefused) {
+  Table t = synthetic_table();
+  t.method[1] = 5;
+  const std::string path = temp_path("bad_method.h5");
+  const TableResult written = write_table(t, path);
+  Table back;
+  const TableResult r = written.ok() ? read_table(path, back) : written;
+  EXPECT_EQ(r.status, TableStatus::InvalidContent) << r.message;
+  EXPECT_NE(r.message.find("/wheels/method"), std::string::npos) << r.message;
 }
 
 TEST(TableFormat, StatusIsAnEnumWithTheCaseStatusNames) {

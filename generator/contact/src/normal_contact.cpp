@@ -8,6 +8,7 @@
 #include "ctab/contact/hertz_strip.hpp"
 #include "ctab/contact/kik_piotrowski.hpp"
 #include "ctab/contact/mim1d.hpp"
+#include "ctab/contact/resolution.hpp"
 #include "ctab/contact/semi_analytic.hpp"
 
 namespace ctab::gen {
@@ -57,14 +58,8 @@ bool valid_input(const GapProfile& gap, const MethodOptions& options, Loading lo
   return true;
 }
 
-}  // namespace
-
-NormalSolution solve_normal_contact(const GapProfile& gap, const MethodOptions& options, Loading loading) {
-  if (!valid_input(gap, options, loading)) {
-    NormalSolution invalid = status_solution(SolveStatus::InvalidInput, method_name(options.method));
-    if (approach_given(loading)) invalid.approach_m = loading.value;
-    return invalid;
-  }
+// The rung's own solve, before the resolution check.
+NormalSolution solve_rung_of(const GapProfile& gap, const MethodOptions& options, Loading loading) {
   switch (options.method) {
     case ContactMethod::Hertz: return solve_rung(solve_hertz_for_approach, solve_hertz_for_load, gap, options, loading);
     case ContactMethod::Kp: return solve_rung(solve_kp_for_approach, solve_kp_for_load, gap, options, loading);
@@ -74,6 +69,19 @@ NormalSolution solve_normal_contact(const GapProfile& gap, const MethodOptions& 
     case ContactMethod::Bem2d: return solve_bem2d(gap, options, loading);
   }
   return status_solution(SolveStatus::InvalidInput, method_name(options.method));
+}
+
+}  // namespace
+
+NormalSolution solve_normal_contact(const GapProfile& gap, const MethodOptions& options, Loading loading) {
+  if (!valid_input(gap, options, loading)) {
+    NormalSolution invalid = status_solution(SolveStatus::InvalidInput, method_name(options.method));
+    if (approach_given(loading)) invalid.approach_m = loading.value;
+    return invalid;
+  }
+  NormalSolution solution = solve_rung_of(gap, options, loading);
+  solution.status = resolution_status(solution.status, options.method, patch_extents(solution), options.strip_width_m);
+  return solution;
 }
 
 }  // namespace ctab::gen

@@ -6,6 +6,7 @@ const char* status_name(SolveStatus status) noexcept {
   switch (status) {
     case SolveStatus::Converged: return "converged";
     case SolveStatus::NoContact: return "no-contact";
+    case SolveStatus::UnderResolved: return "under-resolved";
     case SolveStatus::MaxIterations: return "max-iterations";
     case SolveStatus::InvalidInput: return "invalid-input";
     case SolveStatus::ZoneTruncated: return "zone-truncated";

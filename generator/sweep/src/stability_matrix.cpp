@@ -428,7 +428,7 @@ Reference reference_of(const Case& c, const StabilityOptions& options) {
   r.name = bem2d_name(options.reference_width_m);
   const Outcome o = c.solve(ContactMethod::Bem2d, options.reference_width_m);
   r.status = o.status;
-  if (o.status == SolveStatus::Converged && o.finite) {
+  if (is_success(o.status) && o.finite) {  // an under-resolved reference still has numbers (and gives no claim)
     r.summary = o.summary;
     r.min_patch_extent_m = o.min_patch_extent_m;
   }
@@ -461,7 +461,7 @@ std::vector<StabilityRow> run_stability_matrix(const StabilityOptions& options) 
   std::vector<StabilityRow> rows;
   for (const Case& c : build_cases(options)) {
     const Reference ref = reference_of(c, options);
-    const bool has_reference = ref.status == SolveStatus::Converged && ref.summary.area_m2 > 0.0;
+    const bool has_reference = is_success(ref.status) && ref.summary.area_m2 > 0.0;
     for (const ContactMethod method : options.methods) {
       const Outcome o = c.solve(method, options.strip_width_m);
       StabilityRow row;

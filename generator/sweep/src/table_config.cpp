@@ -242,12 +242,14 @@ void read_solver(const Reader& r, TableConfig& c) {
   const std::string mode = r.text("solver", "mode", "wheelset"), method = r.text("solver", "method", "mim1d");
   if (mode != "wheelset" && mode != "wheel")
     r.fail(*r.find("solver", "mode"), "solver.mode", "expected \"wheelset\" or \"wheel\", got \"" + mode + "\"");
-  const std::optional<ContactMethod> parsed = parse_contact_method(method);
+  c.least_model = method == "auto";
+  const std::optional<ContactMethod> parsed = c.least_model ? ContactMethod::Mim1d : parse_contact_method(method);
   if (!parsed)
     r.fail(*r.find("solver", "method"), "solver.method",
-           "expected one of " + contact_method_choices() + ", got \"" + method + "\"");
+           "expected one of " + contact_method_choices() + ", auto, got \"" + method + "\"");
   c.mode = mode == "wheel" ? ContactMode::SingleWheel : ContactMode::Wheelset;
   c.method = *parsed;
+  c.tolerance = r.number_in("solver", "tolerance", c.tolerance, 1e-6, 0.5, "a relative tolerance in [1e-06, 0.5]");
   c.strip_width_m = r.number_in("solver", "strip_width_m", c.strip_width_m, kMinStripWidth_m, kMaxStripWidth_m,
                                 "a strip width in [1e-05, 0.005] m");
   const std::optional<bool> centre = parse_reference_point(r.text("solver", "reference_point", "deepest"));
@@ -349,7 +351,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
       {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
        {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
-       {"solver", {"mode", "method", "strip_width_m", "reference_point", "surface", "warm_start"}},
+       {"solver", {"mode", "method", "tolerance", "strip_width_m", "reference_point", "surface", "warm_start"}},
        {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;

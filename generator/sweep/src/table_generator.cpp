@@ -28,6 +28,7 @@ namespace ctab::gen {
 using tables::CaseStatus;
 static_assert(static_cast<int>(SolveStatus::Converged) == static_cast<int>(CaseStatus::Converged));
 static_assert(static_cast<int>(SolveStatus::NoContact) == static_cast<int>(CaseStatus::NoContact));
+static_assert(static_cast<int>(SolveStatus::UnderResolved) == static_cast<int>(CaseStatus::UnderResolved));
 static_assert(static_cast<int>(SolveStatus::MaxIterations) == static_cast<int>(CaseStatus::MaxIterations));
 static_assert(static_cast<int>(SolveStatus::InvalidInput) == static_cast<int>(CaseStatus::InvalidInput));
 static_assert(static_cast<int>(SolveStatus::ZoneTruncated) == static_cast<int>(CaseStatus::ZoneTruncated));
@@ -37,6 +38,7 @@ tables::CaseStatus case_status(SolveStatus status) noexcept {
   switch (status) {
     case SolveStatus::Converged: return CaseStatus::Converged;
     case SolveStatus::NoContact: return CaseStatus::NoContact;
+    case SolveStatus::UnderResolved: return CaseStatus::UnderResolved;
     case SolveStatus::MaxIterations: return CaseStatus::MaxIterations;
     case SolveStatus::InvalidInput: return CaseStatus::InvalidInput;
     case SolveStatus::ZoneTruncated: return CaseStatus::ZoneTruncated;
@@ -106,6 +108,7 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.side = std::make_unique<const SideGeometry>(place_profiles(config, *setup.wheel, *setup.rail));
   setup.E_star_Pa = effective_modulus(config.material, config.material);
   setup.options.method = config.method;
+  setup.auto_tolerance = config.least_model ? config.tolerance : 0.0;
   setup.options.mim1d.strip_width_m = config.strip_width_m;  // range checked by the config
   setup.options.reference_at_interpenetration_centre = config.reference_at_interpenetration_centre;
   setup.options.surface = config.surface;
@@ -113,7 +116,7 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.load_kind = config.load_kind;
   setup.dy_axis_m = config.lateral_displacement_m;
   setup.mirrored = !setup.dy_axis_m.empty() && symmetric_axis(setup.dy_axis_m);
-  setup.warm_start = config.warm_start && config.method == NormalMethod::Mim1d;
+  setup.warm_start = config.warm_start && config.method == NormalMethod::Mim1d && !config.least_model;
   (void)StripKernel::instance();  // process-wide tables are built here, not inside a parallel region
   HertzCoefficients warm_up;
   (void)hertz_coefficients_tabulated(1.0, 2.0, warm_up);
@@ -137,11 +140,18 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
   const double shift = wheel == 1 ? -dy_m : dy_m, angle = wheel == 1 ? -roll.roll_rad : roll.roll_rad;
   CaseWheel out;
   try {
-    out.contact = warm_start == nullptr
-                      ? solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
-                                            setup.options, workspace)
-                      : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
-                                            setup.options, workspace, *warm_start);
+    out.choice.method = setup.options.method;
+    out.choice.strip_width_m = setup.options.mim1d.strip_width_m;
+    out.choice.solves = 1;
+    if (setup.auto_tolerance > 0.0)
+      out.contact = solve_wheel_contact_auto(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                             setup.options, setup.auto_tolerance, workspace, &out.choice);
+    else
+      out.contact = warm_start == nullptr
+                        ? solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                              setup.options, workspace)
+                        : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
+                                              setup.options, workspace, *warm_start);
     if (!roll.converged) {
       if (warm_start != nullptr) warm_start->clear();
       out.contact.status = SolveStatus::MaxIterations;
@@ -304,7 +314,10 @@ SlotCase slot_case(const CaseWheel& solved) {
 // Status and patches of one wheel of one case in the slots `assignment` gives them.
 void store_wheel(tables::Table& table, const SweepSetup& setup, std::size_t i_dy, std::size_t i_second,
                  std::size_t wheel, const CaseWheel& solved, const SlotAssignment& assignment) {
-  CaseStatus& status = table.status[table.wheel_index(i_dy, i_second, wheel)];
+  const std::size_t w = table.wheel_index(i_dy, i_second, wheel);
+  table.method[w] = static_cast<std::int8_t>(solved.choice.method);
+  table.strip_width_m[w] = solved.choice.strip_width_m;
+  CaseStatus& status = table.status[w];
   status = case_status(solved);
   if (!tables::is_success(status)) return;  // a failed case holds no patches
   if (assignment.overflow) {
@@ -550,14 +563,15 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["rail_inclination"] = config.inclination_text;
   text["smoothing"] = config.smoothing_auto ? kSmoothingAuto : number_text(config.smoothing_length_m) + " m";
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
-  text["method"] = method_name(config.method);
+  text["method"] = config.least_model ? "auto" : method_name(config.method);  // per case: /wheels/method
   text["surface"] = std::string(surface_name(config.surface));
   text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;
   number["youngs_modulus_Pa"] = config.material.youngs_modulus_Pa;
   number["poisson_ratio"] = config.material.poisson_ratio;
-  number["strip_width_m"] = config.strip_width_m;
+  number["strip_width_m"] = config.strip_width_m;  // per case: /wheels/strip_width_m
+  if (config.least_model) number["tolerance"] = config.tolerance;
   number["gauge_m"] = config.track.gauge_m;
   number["nominal_radius_m"] = config.track.nominal_radius_m;
   add_smoothing_provenance(table, "wheel", setup.wheel_smoothing);

@@ -47,7 +47,8 @@ std::vector<SlotArray> slot_arrays(tables::Table& t) {
 std::vector<RowArray> row_arrays(tables::Table& t) {
   const std::size_t cases = t.n_second(), wheels = cases * tables::kWheels, slots = wheels * t.n_slots;
   std::vector<RowArray> arrays = {row_array(t.roll_rad, cases), row_array(t.rolling_radius_difference_m, cases),
-                                  row_array(t.status, wheels)};
+                                  row_array(t.status, wheels), row_array(t.method, wheels),
+                                  row_array(t.strip_width_m, wheels)};
   for (const SlotArray& a : slot_arrays(t)) arrays.push_back({a.data, a.slot_bytes * slots});
   return arrays;
 }

@@ -10,6 +10,7 @@
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/mim1d.hpp"
 #include "ctab/contact/normal_contact.hpp"
+#include "ctab/contact/resolution.hpp"
 #include "ctab/contact/root_finding.hpp"
 #include "ctab/contact/strip_grid.hpp"
 
@@ -750,6 +751,14 @@ class WheelCase {
     return status;
   }
 
+  // The loaded patches' extents in their contact planes (resolution.hpp).
+  std::vector<PatchExtent> patch_extents() const {
+    std::vector<PatchExtent> extents;
+    for (const ContactPatch& p : result_.patches)
+      extents.push_back(patch_extent(p.s_max_m - p.s_min_m, p.normal_force_N, p.strips));
+    return extents;
+  }
+
   bool all_patches_out_of_contact() const {
     for (std::size_t slot = 0; slot < ws_.used; ++slot)
       if (ws_.pool[slot].solution.status != SolveStatus::NoContact) return false;
@@ -830,7 +839,7 @@ class WheelCase {
 
   WheelContact finish(SolveStatus status, std::string detail = {}) {
     save_warm_start(status);
-    result_.status = status;
+    result_.status = resolution_status(status, options_.method, patch_extents(), options_.mim1d.strip_width_m);
     if (!is_success(status)) {
       result_.patches.clear();
       result_.detail = detail.empty() ? status_name(status) : std::move(detail);

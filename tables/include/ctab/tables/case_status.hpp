@@ -9,6 +9,7 @@ namespace ctab::tables {
 enum class CaseStatus : std::int8_t {
   Converged = 0,          //!< solved to tolerance
   NoContact = 1,          //!< the bodies do not touch (zero load); a valid outcome
+  UnderResolved = 2,      //!< solved, but fewer than 8 strips across the smallest loaded patch: usable, error unbounded
   MaxIterations = -1,     //!< iteration limit reached; the case holds no patches
   InvalidInput = -2,      //!< inputs out of the solver's domain
   ZoneTruncated = -3,     //!< the contact reaches the end of the profile data
@@ -18,7 +19,7 @@ enum class CaseStatus : std::int8_t {
 };
 
 inline constexpr int kCaseStatusMin = -6;  //!< smallest value defined above
-inline constexpr int kCaseStatusMax = 1;   //!< largest value defined above
+inline constexpr int kCaseStatusMax = 2;   //!< largest value defined above
 
 //! Short lower-case name ("converged", "no-contact", "slot-overflow", ...); "unknown" for other values.
 [[nodiscard]] const char* case_status_name(CaseStatus status) noexcept;
@@ -26,9 +27,7 @@ inline constexpr int kCaseStatusMax = 1;   //!< largest value defined above
 [[nodiscard]] constexpr bool is_case_status(int value) noexcept {
   return value >= kCaseStatusMin && value <= kCaseStatusMax;
 }
-//! True for Converged and NoContact.
-[[nodiscard]] constexpr bool is_success(CaseStatus status) noexcept {
-  return status == CaseStatus::Converged || status == CaseStatus::NoContact;
-}
+//! True for the usable outcomes Converged, NoContact and UnderResolved (values >= 0; the lookup's rule too).
+[[nodiscard]] constexpr bool is_success(CaseStatus status) noexcept { return static_cast<int>(status) >= 0; }
 
 }  // namespace ctab::tables

@@ -81,6 +81,11 @@ struct Table {
   std::vector<double>
       rolling_radius_difference_m;  //!< r_right - r_left at the rigid contact points (n_dy x n_second) [m]
   std::vector<CaseStatus> status;   //!< per wheel (n_dy x n_second x kWheels)
+  //! Per wheel: the normal-contact method that solved the case (ContactMethod value: 0 mim1d, 1 hertz, 2 kp,
+  //! 3 analyn, 4 bem2d) and its strip width [m]; with `--method auto` the least model's choice. Optional on read:
+  //! tables written before these datasets read as kMethodNotRecorded and 0 m.
+  std::vector<std::int8_t> method;
+  std::vector<double> strip_width_m;
   PatchQuantities patch;
   std::vector<Jump> jumps;                                 //!< sorted by (i_second, wheel, slot, i_dy)
   std::map<std::string, std::string> text_attributes;      //!< provenance, UTF-8 (see README)
@@ -102,6 +107,11 @@ struct Table {
   //! Sizes every array for the axes, n_slots and strip_samples already set (fills zeros, status Converged).
   void allocate();
 };
+
+//! `Table::method` of a table written before the dataset existed.
+inline constexpr std::int8_t kMethodNotRecorded = -1;
+//! Largest ContactMethod value (bem2d).
+inline constexpr std::int8_t kMaxMethodValue = 4;
 
 //! Finds the jumps of a table from its presence flags and rail contact points: a slot that appears or
 //! disappears between neighbours, or whose y_rail_m moves by more than max(1 mm, 10 dy steps).

@@ -49,6 +49,10 @@ struct TableConfig {
   ContactMode mode = ContactMode::Wheelset;
   NormalMethod method = NormalMethod::Mim1d;
   double strip_width_m = 0.2e-3;
+  //! [solver] method = "auto": the least model (least_model.hpp) picks the strip width per case; `method` is then
+  //! Mim1d and strip_width_m unused. [solver] tolerance: its error tolerance (0 < T < 1, default 0.02) [-].
+  bool least_model = false;
+  double tolerance = 0.02;
   //! [solver] reference_point: "deepest" (false, the default) or "interpenetration-centre" (true, CONTACT's rule):
   //! where a patch's contact plane is placed (WheelRailOptions::reference_at_interpenetration_centre).
   bool reference_at_interpenetration_centre = false;

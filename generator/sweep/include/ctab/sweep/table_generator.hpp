@@ -24,6 +24,7 @@
 #include "ctab/io/profile_io.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/tables/table.hpp"
+#include "ctab/wheelrail/least_model.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 
 namespace ctab::gen {
@@ -46,6 +47,8 @@ struct SweepSetup {
   //! Method and strip width from the config, the other solver options at their defaults. A single-case caller
   //! (`ctab solve --curvature/--update`) may change them before solving; generate_table never does.
   WheelRailOptions options;
+  //! The least model's tolerance (TableConfig::least_model), 0: off (options.method at its strip width) [-].
+  double auto_tolerance = 0.0;
   ContactMode mode = ContactMode::Wheelset;
   LoadKind load_kind = LoadKind::VerticalForce;
   //! The config's lateral axis [m], whether the sweep is mirrored (one side solved) and whether its solves are
@@ -87,6 +90,7 @@ struct CaseRoll {
 struct CaseWheel {
   WheelContact contact;
   bool exception = false;  //!< the solver threw (tables::CaseStatus::SolverException)
+  AutoChoice choice;       //!< the method and strip width that solved it (the least model's choice, or the config's)
 };
 //! With `warm_start`, MIM-1D starts from it and leaves this case's solution in it (solve_wheel_contact).
 [[nodiscard]] CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
