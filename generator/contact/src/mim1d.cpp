@@ -99,8 +99,8 @@ void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
   const StripKernel& kernel = StripKernel::instance();
   const auto n = static_cast<Eigen::Index>(active_.size());
   const bool jacobian = kind == MatrixKind::Jacobian;
-  Eigen::MatrixXd& matrix = jacobian ? jacobian_ : influence_;
-  matrix.resize(n, n);
+  influence_.resize(n, n);
+  if (jacobian) jacobian_.resize(n, n);
   displacement_.setZero(n);
   const std::size_t first = active_.front(), last = active_.back();
   for (Eigen::Index c = 0; c < n; ++c) {
@@ -115,19 +115,19 @@ void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
       else kernel.value_and_scaled_slope(t, column_h_[k], column_q_[k]);
     }
     const double load = with_displacement ? load_[j] : 0.0;
-    double* column = matrix.col(c).data();
+    double* column = influence_.col(c).data();
+    double* jacobian_column = jacobian ? jacobian_.col(c).data() : nullptr;
     double* u = displacement_.data();
     for (Eigen::Index r = 0; r < n; ++r) {
       const std::size_t i = active_[static_cast<std::size_t>(r)];
       const std::size_t k = i > j ? i - j : j - i;
       const double g = kernel_scale_ * (k == 0 ? 2.0 * column_h_[0] : column_h_[k] - column_h_[k - 1]);
       u[r] += g * load;  // u = G N, accumulated column by column
+      column[r] = g;
       if (jacobian) {
         // d(G_ij N_j)/dN_j = G_ij + (a_j/2) dG_ij/da_j, with dh(c/a)/da = -t h'(t)/a.
         const double dq = k == 0 ? 2.0 * column_q_[0] : column_q_[k] - column_q_[k - 1];
-        column[r] = g - 0.5 * kernel_scale_ * dq;
-      } else {
-        column[r] = g;
+        jacobian_column[r] = g - 0.5 * kernel_scale_ * dq;
       }
     }
   }
@@ -339,10 +339,8 @@ bool Mim1dSolver::newton_step(const InnerState& state, double force_mismatch, do
 }
 
 void Mim1dSolver::fixed_point_step(const InnerState& state, double& next_approach) {
-  if (options_.update == Mim1dUpdate::Newton)
-    build_matrices(MatrixKind::Influence, false);  // G itself, only when needed
-  factorisation_.compute(influence_);
-  if (state.target_load_N) {                                              // G N - delta 1 = -h,  1^T N = target
+  factorisation_.compute(influence_);  // G, built with the Jacobian in this iteration (build_matrices)
+  if (state.target_load_N) {           // G N - delta 1 = -h,  1^T N = target
     next_loads_ = factorisation_.solve(rhs_ - state.approach_m * ones_);  // G^-1 (-h)
     slope_ = factorisation_.solve(ones_);
     next_approach = (*state.target_load_N - next_loads_.sum()) / slope_.sum();

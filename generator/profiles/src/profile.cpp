@@ -107,4 +107,41 @@ std::pair<double, double> ProfileTable::highest_point() const noexcept {
   return {y0_ + step_ * static_cast<double>(k), z_[k]};
 }
 
+std::vector<ProfileTable::DerivativeBounds> ProfileTable::interval_derivative_bounds() const {
+  // On each interval the cubic's d2z/dy2 is linear (largest at an end) and its dz/dy quadratic (largest at an end
+  // or where d2z/dy2 = 0).
+  std::vector<DerivativeBounds> bounds(z_.size() > 1 ? z_.size() - 1 : 0);
+  const double h = step_;
+  for (std::size_t k = 0; k + 1 < z_.size(); ++k) {
+    const double dz = z_[k + 1] - z_[k], m0 = dz_[k] * h, m1 = dz_[k + 1] * h;
+    const double second_0 = (6 * dz - 4 * m0 - 2 * m1) / (h * h), second_1 = (-6 * dz + 2 * m0 + 4 * m1) / (h * h);
+    DerivativeBounds& b = bounds[k];
+    b.second_derivative = std::max(std::abs(second_0), std::abs(second_1));
+    b.slope_low = std::min(dz_[k], dz_[k + 1]);
+    b.slope_high = std::max(dz_[k], dz_[k + 1]);
+    if ((second_0 > 0.0) != (second_1 > 0.0)) {
+      const double s = second_0 / (second_0 - second_1);  // where the linear d2z/dy2 vanishes
+      const double slope = ((6 * s * s - 6 * s) * -dz + (3 * s * s - 4 * s + 1) * m0 + (3 * s * s - 2 * s) * m1) / h;
+      b.slope_low = std::min(b.slope_low, slope);
+      b.slope_high = std::max(b.slope_high, slope);
+    }
+    b.slope = std::max(std::abs(b.slope_low), std::abs(b.slope_high));
+  }
+  return bounds;
+}
+
+void ProfileTable::DerivativeBounds::include(const DerivativeBounds& other) noexcept {
+  slope = std::max(slope, other.slope);
+  second_derivative = std::max(second_derivative, other.second_derivative);
+  slope_low = std::min(slope_low, other.slope_low);
+  slope_high = std::max(slope_high, other.slope_high);
+}
+
+ProfileTable::DerivativeBounds ProfileTable::derivative_bounds() const {
+  const std::vector<DerivativeBounds> intervals = interval_derivative_bounds();
+  DerivativeBounds all = intervals.empty() ? DerivativeBounds{} : intervals.front();
+  for (const DerivativeBounds& b : intervals) all.include(b);
+  return all;
+}
+
 }  // namespace ctab::gen

@@ -125,10 +125,10 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
 
 // ---- one case ----
 
-CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m) noexcept {
+CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m, const RollGuess* guess) noexcept {
   if (setup.mode != ContactMode::Wheelset) return {};
   try {
-    const WheelsetPose pose = rigid_wheelset_pose(*setup.side, *setup.side, dy_m);
+    const WheelsetPose pose = rigid_wheelset_pose(*setup.side, *setup.side, dy_m, guess);
     return {pose.roll_rad, pose.converged, pose.detail};
   } catch (...) {
     return {0.0, false, "the wheelset roll search threw"};
@@ -406,6 +406,33 @@ std::vector<std::size_t> roll_sources(const SweepSetup& setup, const SweepPlan& 
   return source;
 }
 
+// Consecutive rows (lateral-shift indices) whose rolls are solved, in runs of at most kRollRunRows: each run is
+// one task, every roll after its first searched from its predecessors' (linear extrapolation). The guess changes
+// only the search's cost, never its result (rigid_wheelset_pose), so any split gives the same table.
+constexpr std::size_t kRollRunRows = 8;
+
+std::vector<std::vector<std::size_t>> roll_runs(const std::vector<std::size_t>& rows,
+                                                const std::vector<std::size_t>& solved) {
+  std::vector<std::vector<std::size_t>> runs;
+  for (std::size_t j = 0; j < solved.size(); ++j) {
+    if (runs.empty() || runs.back().size() == kRollRunRows || rows[solved[j]] != rows[runs.back().back()] + 1)
+      runs.emplace_back();
+    runs.back().push_back(solved[j]);
+  }
+  return runs;
+}
+
+// The guess for the next roll of a run from the rolls before it (none for the run's first).
+const RollGuess* next_roll_guess(const std::vector<CaseRoll>& rolls, const std::vector<std::size_t>& run,
+                                 std::size_t position, RollGuess& guess) {
+  if (position == 0 || !rolls[run[position - 1]].converged) return nullptr;
+  const double previous = rolls[run[position - 1]].roll_rad;
+  const bool two = position >= 2 && rolls[run[position - 2]].converged;
+  const double change = two ? previous - rolls[run[position - 2]].roll_rad : 0.0;
+  guess = {previous + change, std::abs(change)};
+  return &guess;
+}
+
 // The rolls of `rows`: those with a source row mirror it (a failed source is solved directly, so that its detail
 // names its own dy).
 void solve_rolls(const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
@@ -414,9 +441,17 @@ void solve_rolls(const SweepSetup& setup, const SweepPlan& plan, const std::vect
   std::vector<std::size_t> solved;
   for (std::size_t k = 0; k < rows.size(); ++k)
     if (source[k] == kSolveRoll) solved.push_back(k);
-      // schedule(dynamic): the roll iteration costs more where the contact jumps.
+  std::sort(solved.begin(), solved.end(), [&](std::size_t a, std::size_t b) { return rows[a] < rows[b]; });
+  const std::vector<std::vector<std::size_t>> runs = roll_runs(rows, solved);
+  // schedule(dynamic): the roll iteration costs more where the contact jumps.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
-  for (std::size_t j = 0; j < solved.size(); ++j) rolls[solved[j]] = solve_case_roll(setup, plan.dy_m[rows[solved[j]]]);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    RollGuess guess;
+    for (std::size_t j = 0; j < runs[r].size(); ++j) {
+      const std::size_t k = runs[r][j];
+      rolls[k] = solve_case_roll(setup, plan.dy_m[rows[k]], next_roll_guess(rolls, runs[r], j, guess));
+    }
+  }
   for (std::size_t k = 0; k < rows.size(); ++k) {
     if (source[k] == kSolveRoll) continue;
     const CaseRoll& mirror = rolls[source[k]];

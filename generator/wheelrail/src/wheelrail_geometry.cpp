@@ -7,8 +7,31 @@
 
 #include "ctab/contact/error.hpp"
 #include "ctab/contact/root_finding.hpp"
+#include "ctab/wheelrail/first_contact_tracker.hpp"
+#include "gap_scan.hpp"
 
 namespace ctab::gen {
+
+DerivativeBlocks::DerivativeBlocks(const ProfileTable& profile)
+    : y_min_(profile.y_min()), y_max_(profile.y_max()), block_m_(profile.step() * kBlock) {
+  const std::vector<ProfileTable::DerivativeBounds> intervals = profile.interval_derivative_bounds();
+  for (std::size_t k = 0; k < intervals.size(); ++k) {
+    if (k % kBlock == 0) blocks_.push_back(intervals[k]);
+    blocks_.back().include(intervals[k]);
+  }
+  if (!blocks_.empty()) all_ = blocks_.front();
+  for (const ProfileTable::DerivativeBounds& b : blocks_) all_.include(b);
+}
+
+ProfileTable::DerivativeBounds DerivativeBlocks::between(double y_lo, double y_hi) const noexcept {
+  if (!(y_lo >= y_min_ && y_hi <= y_max_ && y_lo <= y_hi) || blocks_.empty()) return all_;
+  const double last_block = static_cast<double>(blocks_.size() - 1);
+  const auto first = static_cast<std::size_t>(std::min(std::floor((y_lo - y_min_) / block_m_), last_block));
+  const auto last = static_cast<std::size_t>(std::min(std::floor((y_hi - y_min_) / block_m_), last_block));
+  ProfileTable::DerivativeBounds bounds = blocks_[first];
+  for (std::size_t b = first + 1; b <= last; ++b) bounds.include(blocks_[b]);
+  return bounds;
+}
 
 SideGeometry::SideGeometry(const ProfileTable& wheel, const ProfileTable& rail, const TrackSetup& track)
     : wheel_(&wheel), rail_(&rail), track_(track) {
@@ -19,6 +42,14 @@ SideGeometry::SideGeometry(const ProfileTable& wheel, const ProfileTable& rail, 
                          " mm below its top");
   rail_origin_y_ = 0.5 * track.gauge_m - gauge_point;
   wheel_origin_y_ = 0.5 * track.flange_back_distance_m - track.flange_back_position_m;
+  rail_bounds_ = DerivativeBlocks(rail);
+  wheel_bounds_ = DerivativeBlocks(wheel);
+  double largest_z = 0.0;
+  for (const double z : wheel.z_samples()) largest_z = std::max(largest_z, std::abs(z));
+  // Between nodes the cubic exceeds its nodes by at most 2 x (4/27) x slope x step (the Hermite slope basis).
+  const double z_l = track.nominal_radius_m + largest_z + wheel_bounds_.all().slope * wheel.step();
+  const double y_l = std::max(std::abs(wheel_origin_y_ + wheel.y_min()), std::abs(wheel_origin_y_ + wheel.y_max()));
+  largest_lever_m_ = std::hypot(y_l, z_l);
 }
 
 WheelSurfacePoint SideGeometry::wheel_point(double s_m, double dy_m, double roll_rad) const noexcept {
@@ -36,11 +67,17 @@ WheelSurfacePoint SideGeometry::wheel_point(double s_m, double dy_m, double roll
 }
 
 void SideGeometry::overlap(double dy_m, double roll_rad, double& s_begin, double& s_end) const noexcept {
-  // y_rail(S) is increasing in S; clip the wheel range to the rail table by bisection.
+  // y_rail(S) is increasing in S; clip the wheel range to the rail table by bisection (until the midpoint equals
+  // an end: later steps would change nothing).
+  const double c = std::cos(roll_rad), sn = std::sin(roll_rad);
+  auto rail_y = [&](double s) {  // wheel_point(s, dy_m, roll_rad).rail_y_m
+    return dy_m + (wheel_origin_y_ + s) * c - (track_.nominal_radius_m + wheel_->at(s).z) * sn - rail_origin_y_;
+  };
   auto inside_from = [&](double lo, double hi, bool lower_end) {
     for (int i = 0; i < 60; ++i) {
       const double mid = 0.5 * (lo + hi);
-      const double y = wheel_point(mid, dy_m, roll_rad).rail_y_m;
+      if (mid == lo || mid == hi) break;
+      const double y = rail_y(mid);
       const bool inside = lower_end ? y >= rail_->y_min() : y <= rail_->y_max();
       (inside == lower_end ? hi : lo) = mid;
     }
@@ -48,77 +85,20 @@ void SideGeometry::overlap(double dy_m, double roll_rad, double& s_begin, double
   };
   s_begin = wheel_->y_min();
   s_end = wheel_->y_max();
-  if (wheel_point(s_begin, dy_m, roll_rad).rail_y_m < rail_->y_min()) s_begin = inside_from(s_begin, s_end, true);
-  if (wheel_point(s_end, dy_m, roll_rad).rail_y_m > rail_->y_max()) s_end = inside_from(s_begin, s_end, false);
-}
-
-namespace {
-
-struct CoarseMinimum {
-  double s, gap;
-};
-
-}  // namespace
-
-// Coarse scan of the gap on a uniform S grid: local minima (interior and at the ends), unrefined.
-static void coarse_minima(const SideGeometry& side, double dy_m, double roll_rad, std::vector<CoarseMinimum>& out,
-                          double& step, double& s_begin, double& s_end) {
-  out.clear();
-  side.overlap(dy_m, roll_rad, s_begin, s_end);
-  // No overlap (the wheel lies beside the rail: the clipped range collapses onto one end): no minimum at all.
-  if (side.wheel_point(s_begin, dy_m, roll_rad).rail_y_m > side.rail().y_max() ||
-      side.wheel_point(s_end, dy_m, roll_rad).rail_y_m < side.rail().y_min())
-    return;
-  const auto count = static_cast<std::size_t>((s_end - s_begin) / SideGeometry::kScanStep_m) + 1;
-  step = (s_end - s_begin) / static_cast<double>(std::max<std::size_t>(count - 1, 1));
-  double previous2 = 0, previous = 0;
-  const double c = std::cos(roll_rad), sn = std::sin(roll_rad);
-  for (std::size_t k = 0; k < count; ++k) {
-    const double g = side.gap_rotated(s_begin + step * static_cast<double>(k), dy_m, c, sn);
-    const bool interior_minimum = k >= 2 && previous < previous2 && previous <= g;
-    const bool end_minimum = (k == 1 && previous <= g) || (k + 1 == count && g < previous);
-    if (interior_minimum || end_minimum) {
-      const std::size_t at = interior_minimum || k == 1 ? k - 1 : k;
-      out.push_back({s_begin + step * static_cast<double>(at), interior_minimum || k == 1 ? previous : g});
-    }
-    previous2 = previous;
-    previous = g;
-  }
-}
-
-// Golden-section refinement of a coarse minimum on [s - step, s + step] within the overlap; returns S.
-static double refine_minimum(const SideGeometry& side, double dy_m, double roll_rad, double centre, double step,
-                             double s_begin, double s_end) {
-  double lo = std::max(s_begin, centre - step), hi = std::min(s_end, centre + step);
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0), c = std::cos(roll_rad), sn = std::sin(roll_rad);
-  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  double f1 = side.gap_rotated(x1, dy_m, c, sn), f2 = side.gap_rotated(x2, dy_m, c, sn);
-  for (int i = 0; i < 48 && hi - lo > 1e-10; ++i) {
-    if (f1 < f2) {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - ratio * (hi - lo);
-      f1 = side.gap_rotated(x1, dy_m, c, sn);
-    } else {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + ratio * (hi - lo);
-      f2 = side.gap_rotated(x2, dy_m, c, sn);
-    }
-  }
-  return 0.5 * (lo + hi);
+  if (rail_y(s_begin) < rail_->y_min()) s_begin = inside_from(s_begin, s_end, true);
+  if (rail_y(s_end) > rail_->y_max()) s_end = inside_from(s_begin, s_end, false);
 }
 
 void SideGeometry::gap_minima(double dy_m, double roll_rad, std::vector<GapMinimum>& minima,
                               double& first_contact_z_m) const {
   minima.clear();
-  thread_local std::vector<CoarseMinimum> coarse;
-  double step = 0, s_begin = 0, s_end = 0;
-  coarse_minima(*this, dy_m, roll_rad, coarse, step, s_begin, s_end);
-  for (const CoarseMinimum& c : coarse) {
-    const double s = refine_minimum(*this, dy_m, roll_rad, c.s, step, s_begin, s_end);
+  thread_local std::vector<gap_scan::CoarseMinimum> coarse;
+  coarse.clear();
+  const gap_scan::Pose pose(dy_m, roll_rad);
+  const gap_scan::Grid grid = gap_scan::make_grid(*this, pose);
+  if (grid.count > 0) gap_scan::scan(*this, pose, grid, 0, grid.count - 1, coarse);
+  for (const gap_scan::CoarseMinimum& c : coarse) {
+    const double s = gap_scan::refine(*this, pose, grid, c.s);
     const WheelSurfacePoint w = wheel_point(s, dy_m, roll_rad);
     const ProfilePoint r = rail_->at(w.rail_y_m);
     minima.push_back({s, w.rail_y_m, r.z - w.z_m, std::atan(r.dz), w.radius_m});
@@ -133,31 +113,26 @@ void SideGeometry::gap_minima(double dy_m, double roll_rad, std::vector<GapMinim
 }
 
 double SideGeometry::first_contact_height(double dy_m, double roll_rad) const {
-  thread_local std::vector<CoarseMinimum> coarse;
-  double step = 0, s_begin = 0, s_end = 0;
-  coarse_minima(*this, dy_m, roll_rad, coarse, step, s_begin, s_end);
-  if (coarse.empty()) return std::numeric_limits<double>::quiet_NaN();
-  // The two lowest coarse minima can swap order on refinement (near-conformal tread); refine both.
-  std::partial_sort(coarse.begin(),
-                    coarse.begin() + std::min<std::ptrdiff_t>(2, static_cast<std::ptrdiff_t>(coarse.size())),
-                    coarse.end(), [](const CoarseMinimum& a, const CoarseMinimum& b) { return a.gap < b.gap; });
-  double lowest = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < std::min<std::size_t>(2, coarse.size()); ++k)
-    lowest =
-        std::min(lowest, gap(refine_minimum(*this, dy_m, roll_rad, coarse[k].s, step, s_begin, s_end), dy_m, roll_rad));
-  return lowest;
+  thread_local std::vector<gap_scan::CoarseMinimum> coarse;
+  coarse.clear();
+  const gap_scan::Pose pose(dy_m, roll_rad);
+  const gap_scan::Grid grid = gap_scan::make_grid(*this, pose);
+  if (grid.count > 0) gap_scan::scan(*this, pose, grid, 0, grid.count - 1, coarse);
+  return gap_scan::refine_two_lowest(*this, pose, grid, coarse).lowest();
 }
 
 namespace {
 
 // Roll iteration (rigid_wheelset_pose): the bracket starts at +-20 mrad (chosen: covers |dy| <= 12 mm on S1002/UIC60,
 // measured up to 3 mrad) and doubles up to kRollBracketWidenings times (+-320 mrad, far beyond a wheelset on its
-// rails).
+// rails). From a guess it starts at guess +- spread (at least kMinimumGuessSpread_rad) and moves outward,
+// quadrupling, at most kGuessWidenings times before it falls back to the cold bracket.
 constexpr double kInitialRollBracket_rad = 0.02;
 constexpr int kRollBracketWidenings = 4;
-constexpr double kRollTolerance_rad = 1e-13;
-constexpr double kHeightTolerance_m = 1e-12;  // z_ws of the two wheels agree to this
+constexpr double kMinimumGuessSpread_rad = 1e-7;
+constexpr int kGuessWidenings = 6;
 constexpr int kRollIterations = 100;
+constexpr int kLatticeSteps = 64;  // the root finder ends within one lattice step; more means it failed
 
 std::string shift_text(double dy_m) {
   char text[48];
@@ -176,14 +151,76 @@ std::string roll_failure(double dy_m, double f_lo, double f_hi, double bracket_r
   return "wheelset roll: did not converge in " + std::to_string(kRollIterations) + " steps at " + shift_text(dy_m);
 }
 
+bool brackets(double f_lo, double f_hi) {
+  return std::isfinite(f_lo) && std::isfinite(f_hi) && (f_lo == 0.0 || f_hi == 0.0 || (f_lo > 0.0) != (f_hi > 0.0));
+}
+
+// A bracket from a guess: the mismatch falls with the roll, so both ends positive put the root above, both
+// negative below. False when it does not bracket after kGuessWidenings moves (or a wheel leaves its rail).
+template <class Mismatch>
+bool bracket_from_guess(const RollGuess& guess, Mismatch& mismatch, double& lo, double& f_lo, double& hi,
+                        double& f_hi) {
+  double width = std::max(guess.spread_rad, kMinimumGuessSpread_rad);
+  if (!std::isfinite(guess.roll_rad) || !std::isfinite(width) || !(std::abs(guess.roll_rad) < kInitialRollBracket_rad))
+    return false;
+  lo = guess.roll_rad - width;
+  hi = guess.roll_rad + width;
+  f_lo = mismatch(lo);
+  f_hi = mismatch(hi);
+  for (int move = 0; move < kGuessWidenings && std::isfinite(f_lo) && std::isfinite(f_hi) && !brackets(f_lo, f_hi);
+       ++move) {
+    width *= 4.0;
+    if (f_hi > 0.0) {
+      lo = hi;
+      f_lo = f_hi;
+      hi = lo + width;
+      f_hi = mismatch(hi);
+    } else {
+      hi = lo;
+      f_hi = f_lo;
+      lo = hi - width;
+      f_lo = mismatch(lo);
+    }
+  }
+  return brackets(f_lo, f_hi);
+}
+
+// The lattice point nearest the root near `x`: the pair k L, (k + 1) L with mismatch >= 0 at the first and < 0 at
+// the second (found by walking from round(x / L)), then the one with the smaller |mismatch| (a tie: the smaller
+// |roll|). The choice is a function of the mismatch alone, not of x, and mirrors exactly: roll(-dy) = -roll(dy).
+template <class Mismatch>
+bool snap_to_lattice(Mismatch& mismatch, double x, double& roll) {
+  auto at = [&](long long k) { return mismatch(static_cast<double>(k) * kRollLattice_rad); };
+  long long k = std::llround(x / kRollLattice_rad), j = 0;
+  double f_k = at(k), f_j = 0.0;
+  int steps = 0;
+  if (f_k >= 0.0) {
+    for (j = k + 1, f_j = at(j); f_j >= 0.0 && ++steps < kLatticeSteps; f_j = at(++j)) {
+      k = j;
+      f_k = f_j;
+    }
+  } else {
+    for (j = k, f_j = f_k, f_k = at(--k); f_k < 0.0 && ++steps < kLatticeSteps; f_k = at(--k)) {
+      j = k;
+      f_j = f_k;
+    }
+  }
+  if (!(f_k >= 0.0 && f_j < 0.0)) return false;
+  const bool take_k = std::abs(f_k) != std::abs(f_j) ? std::abs(f_k) < std::abs(f_j) : std::llabs(k) < std::llabs(j);
+  roll = static_cast<double>(take_k ? k : j) * kRollLattice_rad;
+  return true;
+}
+
 }  // namespace
 
-WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& left, double dy_m) {
+WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& left, double dy_m,
+                                 const RollGuess* guess) {
   WheelsetPose pose;
   pose.dy_m = dy_m;
+  FirstContactTracker right_heights(right, dy_m), left_heights(left, -dy_m);
   auto heights = [&](double roll, double& z_right, double& z_left) {
-    z_right = right.first_contact_height(dy_m, roll);
-    z_left = left.first_contact_height(-dy_m, -roll);
+    z_right = right_heights.height(roll);
+    z_left = left_heights.height(-roll);
   };
   // Both wheels touch when z_ws(right) = z_ws(left); the difference falls monotonically with the roll angle.
   auto mismatch = [&](double roll) {
@@ -191,18 +228,22 @@ WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& 
     heights(roll, zr, zl);
     return zr - zl;
   };
-  double lo = -kInitialRollBracket_rad, hi = kInitialRollBracket_rad;
-  double f_lo = mismatch(lo), f_hi = mismatch(hi);
-  for (int widen = 0; widen < kRollBracketWidenings && (f_lo > 0.0) == (f_hi > 0.0); ++widen) {
-    lo *= 2.0;
-    hi *= 2.0;
+  double lo = 0.0, hi = 0.0, f_lo = 0.0, f_hi = 0.0;
+  if (guess == nullptr || !bracket_from_guess(*guess, mismatch, lo, f_lo, hi, f_hi)) {
+    lo = -kInitialRollBracket_rad;
+    hi = kInitialRollBracket_rad;
     f_lo = mismatch(lo);
     f_hi = mismatch(hi);
+    for (int widen = 0; widen < kRollBracketWidenings && (f_lo > 0.0) == (f_hi > 0.0); ++widen) {
+      lo *= 2.0;
+      hi *= 2.0;
+      f_lo = mismatch(lo);
+      f_hi = mismatch(hi);
+    }
   }
-  const RootResult root =
-      find_root_bracketed(mismatch, lo, f_lo, hi, f_hi, kRollTolerance_rad, kHeightTolerance_m, kRollIterations);
-  pose.converged = root.converged;
-  pose.roll_rad = root.x;
+  const RootResult root = find_root_bracketed(mismatch, lo, f_lo, hi, f_hi, kRollLattice_rad, 0.0, kRollIterations);
+  pose.converged = root.converged && snap_to_lattice(mismatch, root.x, pose.roll_rad);
+  if (!pose.converged) pose.roll_rad = root.x;
   heights(pose.roll_rad, pose.z_right_m, pose.z_left_m);
   if (!pose.converged) pose.detail = roll_failure(dy_m, f_lo, f_hi, hi);
   return pose;

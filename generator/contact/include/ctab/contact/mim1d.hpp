@@ -119,7 +119,8 @@ class Mim1dSolver {
   [[nodiscard]] double hertz_start_approach(double normal_force_N) const;
   void update_lengths();
   enum class MatrixKind { Influence, Jacobian };
-  //! Fills G or the Jacobian on the active set and, with_displacement, u = G N (the residual's part).
+  //! Fills G, or the Jacobian and G together (a Newton step that unloads a strip falls back to G in the same
+  //! iteration), on the active set and, with_displacement, u = G N (the residual's part).
   void build_matrices(MatrixKind kind, bool with_displacement);
   [[nodiscard]] double displacement_at(std::size_t strip) const;
   void initialise_zone(double approach_m);

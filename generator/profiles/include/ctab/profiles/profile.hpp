@@ -79,6 +79,18 @@ class ProfileTable {
   [[nodiscard]] const std::vector<double>& z_samples() const noexcept { return z_; }
   //! Highest point (smallest z) of the profile: {y, z}.
   [[nodiscard]] std::pair<double, double> highest_point() const noexcept;
+  //! Largest |dz/dy| and |d2z/dy2| of the interpolating cubic (what z_at evaluates) over the whole table:
+  //! exact bounds for the gap scans' error estimates (wheelrail first_contact_tracker).
+  struct DerivativeBounds {
+    double slope = 0.0;                                    //!< max |dz/dy| [-]
+    double second_derivative = 0.0;                        //!< max |d2z/dy2| [1/m]
+    double slope_low = 0.0;                                //!< min dz/dy (signed) [-]
+    double slope_high = 0.0;                               //!< max dz/dy (signed) [-]
+    void include(const DerivativeBounds& other) noexcept;  //!< bounds of both
+  };
+  [[nodiscard]] DerivativeBounds derivative_bounds() const;
+  //! The same for each interval between neighbouring nodes (interval k: [y_min + k step, y_min + (k + 1) step]).
+  [[nodiscard]] std::vector<DerivativeBounds> interval_derivative_bounds() const;
 
  private:
   std::string name_;

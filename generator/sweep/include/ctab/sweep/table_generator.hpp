@@ -82,7 +82,9 @@ struct CaseRoll {
   bool converged = true;
   std::string detail;  //!< why the roll search failed ("" when converged)
 };
-[[nodiscard]] CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m) noexcept;
+//! `guess` (a neighbouring shift's roll) only speeds the search up: the roll is the same bit for bit without it
+//! (rigid_wheelset_pose).
+[[nodiscard]] CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m, const RollGuess* guess = nullptr) noexcept;
 
 //! One wheel of a case in its own side frame (wheel 0 right: shift +dy, roll +phi; wheel 1 left: -dy, -phi).
 //! Never throws: a solver exception gives an empty contact and `exception = true`; a roll that did not converge

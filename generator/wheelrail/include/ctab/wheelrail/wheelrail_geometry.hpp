@@ -44,6 +44,23 @@ struct WheelSurfacePoint {
   double radius_m = 0.0;   //!< r_nom + F(S) [m]
 };
 
+//! Derivative bounds of a profile's cubic per block of kBlock intervals, for range queries (the gap scans' error
+//! bounds, FirstContactTracker).
+class DerivativeBlocks {
+ public:
+  static constexpr std::size_t kBlock = 16;
+  DerivativeBlocks() = default;
+  explicit DerivativeBlocks(const ProfileTable& profile);
+  //! Bounds over [y_lo, y_hi] (rounded out to whole blocks); the whole profile's when the range leaves it.
+  [[nodiscard]] ProfileTable::DerivativeBounds between(double y_lo, double y_hi) const noexcept;
+  [[nodiscard]] const ProfileTable::DerivativeBounds& all() const noexcept { return all_; }
+
+ private:
+  double y_min_ = 0.0, y_max_ = 0.0, block_m_ = 1.0;
+  ProfileTable::DerivativeBounds all_;
+  std::vector<ProfileTable::DerivativeBounds> blocks_;
+};
+
 class SideGeometry {
  public:
   //! Places the profiles (validated tables) on the track; throws InputError if the rail has no gauge point.
@@ -72,6 +89,11 @@ class SideGeometry {
   [[nodiscard]] const TrackSetup& track() const noexcept { return track_; }
   [[nodiscard]] double rail_origin_y_m() const noexcept { return rail_origin_y_; }
   [[nodiscard]] double wheel_origin_y_m() const noexcept { return wheel_origin_y_; }
+  //! Derivative bounds of the rail's and the wheel's interpolating cubics (the gap scans' error estimates).
+  [[nodiscard]] const DerivativeBlocks& rail_bounds() const noexcept { return rail_bounds_; }
+  [[nodiscard]] const DerivativeBlocks& wheel_bounds() const noexcept { return wheel_bounds_; }
+  //! Largest distance of a wheel profile point from the axle centre, sqrt(y_l^2 + z_l^2) [m].
+  [[nodiscard]] double largest_lever_m() const noexcept { return largest_lever_m_; }
 
   static constexpr double kScanStep_m = 0.1e-3;  //!< coarse scan step before refining minima
 
@@ -81,6 +103,8 @@ class SideGeometry {
   TrackSetup track_;
   double rail_origin_y_ = 0.0;   // lateral track position of the rail profile origin [m]
   double wheel_origin_y_ = 0.0;  // wheelset-local lateral position of S = 0 [m]
+  DerivativeBlocks rail_bounds_, wheel_bounds_;
+  double largest_lever_m_ = 0.0;
 };
 
 //! Rigid wheelset state for one lateral shift.
@@ -93,7 +117,20 @@ struct WheelsetPose {
   std::string detail;  //!< empty when converged; otherwise why not, in words (names dy)
 };
 
-//! Roll angle at which both wheels touch at the same z_ws (rigid wheelset), by a safeguarded root finder.
-[[nodiscard]] WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& left, double dy_m);
+//! A neighbouring shift's roll, to start the roll search from.
+struct RollGuess {
+  double roll_rad = 0.0;    //!< expected roll [rad]
+  double spread_rad = 0.0;  //!< expected error of roll_rad [rad] (the first bracket's half width, at least 1e-7)
+};
+
+//! Roll angle at which both wheels touch at the same z_ws (rigid wheelset), by a safeguarded root finder. The
+//! result is the point of a fixed lattice (kRollLattice_rad) nearest the root, so it does not depend on where the
+//! search starts: `guess` (a neighbouring shift's roll) only makes it faster, and the roll is bit for bit the same
+//! with or without one.
+[[nodiscard]] WheelsetPose rigid_wheelset_pose(const SideGeometry& right, const SideGeometry& left, double dy_m,
+                                               const RollGuess* guess = nullptr);
+
+//! Spacing of the roll lattice [rad]: 2^-44 (5.7e-14 rad), below the roll tolerance (1e-13 rad).
+inline constexpr double kRollLattice_rad = 0x1p-44;
 
 }  // namespace ctab::gen
