@@ -115,7 +115,7 @@ strip_samples = 8
   for (std::size_t i = 0; i < table.n_dy(); ++i)
     for (std::size_t j = 0; j < table.n_second(); ++j)
       for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel) {
-        EXPECT_EQ(table.status[table.wheel_index(i, j, wheel)], ctab::tables::CaseStatus::Converged)
+        EXPECT_TRUE(ctab::tables::is_success(table.status[table.wheel_index(i, j, wheel)]))
             << "dy " << table.lateral_displacement_m[i] << " m, load " << table.second_axis[j] << " N";
         double sum = 0.0;
         for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
