@@ -1,8 +1,9 @@
 // The stability matrix (ctab/sweep/stability_matrix.hpp, issue 10 "Stability where methods fail"): every rung on
 // hard scenes. Per row: no NaN or inf, bounded time, a known status, "no-contact" without load, and where ctab
-// claims validity (stability_claim_applies: converged, resolved by >= 8 strips, in the method's domain) the error
-// within the stated bound. The quick subset without bem2d is fast; each scene in full is one test labelled slow.
-// Also the regression of the Hertz rung's curvature floor (a laterally elongated Hertz ellipse).
+// claims validity (stability_claim_applies: converged, resolved by >= 8 strips, no roughness below two strips
+// that carries over 10 % of the mean pressure, in the method's domain) the error within the stated bound. The quick
+// subset without bem2d is fast; each scene in full is one test labelled slow. Also the regression of the Hertz rung's
+// curvature floor (a laterally elongated Hertz ellipse).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -140,3 +141,28 @@ TEST_P(StabilityMatrixScene, FullIsFiniteAndHonest) {
 
 INSTANTIATE_TEST_SUITE_P(Full, StabilityMatrixScene, ::testing::ValuesIn(stability_scene_names()),
                          [](const ::testing::TestParamInfo<std::string>& scene) { return scene.param; });
+
+// Roughness below the rung's sampling (two strip widths): raw 1 um noise every 0.1 mm keeps half its variance
+// there and needs about 0.5 GPa to flatten at 0.4 mm, a third of a wheel-rail mean pressure: no claim. The
+// default smoothing (L = 1 mm) leaves under 1 % of that; clean profiles and strips finer than the points, nothing.
+TEST(StabilityMatrix, UnresolvedRoughnessRemovesTheClaim) {
+  const double sigma = 1e-6 / std::sqrt(3.0), h = 0.1e-3, w = 0.2e-3;
+  EXPECT_NEAR(unresolved_roughness_rms_m(sigma, h, 0.0, w), sigma * std::sqrt(0.5), 1e-4 * sigma);
+  EXPECT_LT(unresolved_roughness_rms_m(sigma, h, 1e-3, w), 0.01 * sigma);
+  EXPECT_EQ(unresolved_roughness_rms_m(sigma, h, 0.0, 0.1e-3), 0.0);
+  EXPECT_EQ(unresolved_roughness_rms_m(0.0, h, 0.0, w), 0.0);
+  const double e_star = effective_modulus(kSteel, kSteel);
+  const double p_star = unresolved_roughness_pressure_Pa(unresolved_roughness_rms_m(sigma, h, 0.0, w), w, e_star);
+  EXPECT_NEAR(p_star, M_PI * e_star * sigma / (2.0 * w), 1e-3 * p_star);  // sqrt(2) * sqrt(0.5) = 1
+  EXPECT_GT(p_star, 0.4e9);
+  StabilityRow row;
+  row.scene = "wheelrail_noise";
+  row.method = "mim1d";
+  row.status = row.reference_status = SolveStatus::Converged;
+  row.min_patch_strips = 11.5;
+  row.area_error_rel = row.max_pressure_error_rel = 0.16;
+  EXPECT_TRUE(stability_claim_applies(row));
+  row.roughness_pressure_ratio = p_star / 1.4e9;  // tread patch of the two-point contact, dy 5.25 mm
+  EXPECT_FALSE(stability_claim_applies(row));
+  EXPECT_TRUE(std::isnan(stability_error_bound(row)));
+}

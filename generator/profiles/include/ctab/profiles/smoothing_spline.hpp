@@ -35,9 +35,12 @@ inline constexpr double kMaxAutoSmoothingLength_m = 50e-3;
 //! Curvature noise the automatic choice allows [1/m] (standard deviation of the smoothed noise's second
 //! derivative): on the running surfaces (kCurvatureNoise_per_m) and near jumps of the curvature, where a long L
 //! would flatten the real profile (kJumpCurvatureNoise_per_m). Calibrated on S1002 and 60E1 with 2, 5 and 10 um
-//! noise every 0.1 mm (tests/generator/profile_noise_test.cpp): 5 um gives L = 8.8 mm and 3.5 mm near jumps.
+//! noise every 0.1 mm (tests/generator/profile_noise_test.cpp): 5 um gives L = 8.8 mm and 3.0 mm near jumps. The
+//! near-jump value is set by the bias on the clean shape: S1002's flank contact just past the root-to-flank jump
+//! of the contact point (dy 7 mm, wheel y -38.8 mm, 70 deg) gains 5.6-6.0 % in area with 3.5 mm (2 /m)
+//! and 3.3 % with 3.0 mm (3 /m) on clean points; the noise adds less than 0.5 % there.
 inline constexpr double kCurvatureNoise_per_m = 0.2;
-inline constexpr double kJumpCurvatureNoise_per_m = 2.0;
+inline constexpr double kJumpCurvatureNoise_per_m = 3.0;
 //! A curvature jump: the pilot curvature's second difference over +-kJumpReach x L exceeds this [1/m] (S1002's
 //! flange root and 60E1's R300/R80/R13 junctions are 8 to 65 1/m; the noise left at L is about 0.5 1/m).
 inline constexpr double kCurvatureJump_per_m = 4.0;
@@ -62,7 +65,7 @@ struct SmoothingChoice {
 //! while sigma is below kNoiseThreshold_m (clean data smooth exactly as with L = 1 mm); otherwise the lengths whose
 //! curvature noise is kCurvatureNoise_per_m and kJumpCurvatureNoise_per_m at the profile's mean point spacing,
 //! clamped to [default, kMaxAutoSmoothingLength_m]. L grows as sigma^(2/5) h^(1/5): 2, 5, 10 um at 0.1 mm give
-//! about 6.1, 8.8, 11.6 mm (2.4, 3.5, 4.6 mm near jumps).
+//! about 6.1, 8.8, 11.6 mm (2.1, 3.0, 3.9 mm near jumps).
 [[nodiscard]] SmoothingChoice choose_smoothing(const std::vector<double>& y, const std::vector<double>& z);
 
 //! The smoothing length at each point: choice.length_m, but choice.jump_length_m within kJumpReach x L of a jump

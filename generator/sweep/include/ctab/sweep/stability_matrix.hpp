@@ -48,6 +48,9 @@ struct StabilityRow {
   SolveStatus reference_status = SolveStatus::Converged;
   double reference_area_m2 = 0.0;  //!< the reference's contact area [m^2]
   double min_patch_strips = 0.0;   //!< reference patch width / strip width (resolution of the case) [-]
+  //! Full-contact pressure of the profile roughness the rung cannot sample (unresolved_roughness_pressure_Pa) over
+  //! the reference's mean pressure N / A [-]; 0 on profiles without measurement noise.
+  double roughness_pressure_ratio = 0.0;
   int iterations = 0;
   double time_s = 0.0;  //!< wall-clock time of the solve [s]
 
@@ -64,9 +67,27 @@ struct StabilityRow {
 //! Error bound ctab claims for `method` on a converged case whose reference exists, is resolved by at least
 //! `kStabilityMinResolvedStrips` strips, and lies in the method's domain (stability_claim_applies); NaN: no claim.
 [[nodiscard]] double stability_error_bound(const StabilityRow& row) noexcept;
-//! Whether `row` lies where ctab claims the bound of stability_error_bound.
+//! Whether `row` lies where ctab claims the bound of stability_error_bound (also: roughness_pressure_ratio at most
+//! kStabilityMaxRoughnessPressureRatio).
 [[nodiscard]] bool stability_claim_applies(const StabilityRow& row) noexcept;
 inline constexpr double kStabilityMinResolvedStrips = 8.0;
+//! Largest roughness_pressure_ratio with a claim: the roughness below the rung's sampling carries less than this
+//! share of the mean pressure, so the rung's smooth gap misses at most about this much of the pressure.
+inline constexpr double kStabilityMaxRoughnessPressureRatio = 0.1;
+
+//! Root-mean-square height [m] of the measurement noise left on a point profile at wavelengths shorter than two
+//! strip widths (what strips of width `strip_width_m` cannot sample, Nyquist): white noise of standard deviation
+//! `noise_sigma_m` on points spaced `point_spacing_m` [m] through the smoothing spline of length
+//! `smoothing_length_m` [m] (the low-pass filter 1 / (1 + lambda omega^4), lambda = (L / 2 pi)^4; L = 0 interpolates
+//! and keeps all of it): sigma^2 h / pi * int_{pi/w}^{pi/h} d omega / (1 + lambda omega^4)^2. 0 when w <= h.
+[[nodiscard]] double unresolved_roughness_rms_m(double noise_sigma_m, double point_spacing_m, double smoothing_length_m,
+                                                double strip_width_m);
+//! The pressure [Pa] that presses that roughness flat: Johnson (1985, section 13.2; Westergaard) p* = pi E* A / lambda
+//! for a sinusoid of amplitude A = sqrt(2) rms and wavelength lambda = 2 strip widths (the longest one unresolved),
+//! E* the plane-strain modulus [Pa]. Where p* is not small against the mean contact pressure the roughness shapes
+//! the pressure (peaks on the asperities) below the rung's strip width: the rung cannot be held to the reference.
+[[nodiscard]] double unresolved_roughness_pressure_Pa(double roughness_rms_m, double strip_width_m,
+                                                      double effective_modulus_Pa);
 
 //! CSV of the rows (header line first; SI units; empty field for NaN).
 [[nodiscard]] std::string stability_csv(const std::vector<StabilityRow>& rows);
