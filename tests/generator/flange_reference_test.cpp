@@ -6,63 +6,19 @@
 // guard at the measured error instead (`guard` in the case table); README "Flange and flank" lists them.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <iostream>
-#include <numbers>
-#include <sstream>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "ctab/contact/material.hpp"
-#include "ctab/io/profile_io.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
+#include "flange_reference.hpp"
 #include "manchester_side.hpp"
-#include "test_support.hpp"
 
 using namespace ctab::gen;
+using namespace ctab::test::flange;
 
 namespace {
-
-constexpr double kLoad_N = 78.5e3;
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-
-// Issue 8's targets.
-constexpr double kAreaTarget = 0.03;      // relative
-constexpr double kPmaxTarget = 0.05;      // relative
-constexpr double kCopTarget_mm = 0.3;     // absolute
-constexpr double kAngleTarget_deg = 0.3;  // absolute
-constexpr double kLateralTarget = 0.02;   // of the vertical load
-constexpr double kP0RmsTarget = 0.05;     // of CONTACT's largest p0
-
-// Per-quantity limit: the target, or a regression guard (the measured error rounded up) where the target is not
-// met. A guard of 0 means "the target".
-struct Limits {
-  double area = 0, pmax = 0, cop_mm = 0, angle_deg = 0, lateral = 0, p0_rms = 0;
-};
-
-struct Case {
-  const char* loading;  // "vertical_load" or "normal_force": file prefix in the reference directory
-  double dy_mm;
-  const char* tag;  // strip-file tag
-  Limits guard;
-};
-
-std::string reference_path(const std::string& file) {
-  return ctab::test::shared_path("reference/contact/wheelrail/flange/" + file);
-}
-
-double limit(double guard, double target) { return guard > 0.0 ? guard : target; }
-
-// Errors of one case against CONTACT.
-struct Errors {
-  double area = 0, pmax = 0, cop_mm = 0, angle_deg = 0, lateral = 0, p0_rms = 0;
-  double contact_angle_deg = 0;  // ctab's reported contact_angle_rad (load-weighted rail inclination) - CONTACT's
-  double rail_point_mm = 0;      // ctab's reference point on the rail - CONTACT's
-  int patches = 0;
-};
 
 // CONTACT's reference point: the centre of the interpenetration region (WheelRailOptions).
 WheelRailOptions centred_options() {
@@ -73,17 +29,8 @@ WheelRailOptions centred_options() {
 
 class FlangeReference : public ctab::test::ManchesterSuite<Case> {
  protected:
-  static Errors measure(const Case& c) {
-    const auto summary = ctab::test::read_csv(reference_path(std::string("planar_") + c.loading + ".csv"));
-    const auto dys = summary.numbers("dy_mm");
-    const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
-    EXPECT_LT(row, dys.size());
-    const double ref_area = summary.numbers("area_mm2")[row], ref_pmax = summary.numbers("pmax_MPa")[row];
-    const double ref_cop = summary.numbers("y_cop_rail_mm")[row];
-    const double ref_angle = summary.numbers("contact_angle_deg")[row];  // planar: every row pushes along it
-    const double ref_lateral = summary.numbers("FY_total_N")[row], ref_vertical = summary.numbers("FZ_total_N")[row];
-    const double ref_rail_point = summary.numbers("ycp_rail_mm")[row];
-
+  static Deviation measure(const Case& c) {
+    const Reference ref = read_reference("planar", c);
     const bool vertical = std::string(c.loading) == "vertical_load";
     const WheelContact contact =
         solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
@@ -92,32 +39,7 @@ class FlangeReference : public ctab::test::ManchesterSuite<Case> {
     const bool flank = c.dy_mm > 7.0;
     EXPECT_TRUE(contact.status == SolveStatus::Converged || (flank && contact.status == SolveStatus::UnderResolved))
         << status_name(contact.status) << " " << contact.detail;
-    Errors e;
-    e.patches = static_cast<int>(contact.patches.size());
-    if (contact.patches.empty()) return e;
-    double force = 0, area = 0, pmax = 0, cop = 0, lateral = 0, vertical_force = 0, angle = 0;
-    for (const auto& p : contact.patches) {
-      force += p.normal_force_N;
-      area += p.area_m2;
-      pmax = std::max(pmax, p.max_pressure_Pa);
-      cop += p.normal_force_N * p.y_cop_rail_m;
-      lateral += p.force_lateral_N;
-      vertical_force += p.force_vertical_N;
-      angle += p.normal_force_N * p.contact_angle_rad;
-    }
-    const ContactPatch& main = contact.patches.front();
-    e.area = area * 1e6 / ref_area - 1.0;
-    e.pmax = pmax * 1e-6 / ref_pmax - 1.0;
-    e.cop_mm = cop / force * 1e3 - ref_cop;
-    // Direction of the total force: CONTACT's force on the rail has FY > 0 towards the field side at a negative
-    // angle, as ctab's force_lateral_N; angle = -atan2(lateral, vertical).
-    e.angle_deg = -std::atan2(lateral, vertical_force) * kDegPerRad - ref_angle;
-    e.lateral = (lateral - ref_lateral) / ref_vertical;
-    e.p0_rms = ctab::test::p0_profile_rms(contact, reference_path(std::string("strips/planar_") + c.loading + "_" +
-                                                                  c.tag + ".csv"));
-    e.contact_angle_deg = angle / force * kDegPerRad - ref_angle;
-    e.rail_point_mm = main.y_rail_m * 1e3 - ref_rail_point;
-    return e;
+    return deviation(contact, ref, reference_path(std::string("strips/planar_") + c.loading + "_" + c.tag + ".csv"));
   }
 };
 
@@ -126,22 +48,12 @@ class FlangeReference : public ctab::test::ManchesterSuite<Case> {
 TEST_P(FlangeReference, PlanarMatchesContact) {
   CTAB_REQUIRE_SHARED();
   const Case c = GetParam();
-  const Errors e = measure(c);
+  const Deviation e = measure(c);
   ASSERT_GT(e.patches, 0);
-  std::ostringstream report;
-  report << std::fixed << std::setprecision(3) << c.loading << " dy " << c.dy_mm << " mm (" << e.patches
-         << " patch): area " << 100 * e.area << " %, pmax " << 100 * e.pmax << " %, cop " << e.cop_mm
-         << " mm, direction " << e.angle_deg << " deg, lateral " << 100 * e.lateral << " % of FZ, p0 rms "
-         << 100 * e.p0_rms << " %; contact_angle " << e.contact_angle_deg << " deg, rail point " << e.rail_point_mm
-         << " mm";
-  RecordProperty("deviation", report.str());
-  std::cout << report.str() << '\n';
-  EXPECT_LT(std::abs(e.area), limit(c.guard.area, kAreaTarget));
-  EXPECT_LT(std::abs(e.pmax), limit(c.guard.pmax, kPmaxTarget));
-  EXPECT_LT(std::abs(e.cop_mm), limit(c.guard.cop_mm, kCopTarget_mm));
-  EXPECT_LT(std::abs(e.angle_deg), limit(c.guard.angle_deg, kAngleTarget_deg));
-  EXPECT_LT(std::abs(e.lateral), limit(c.guard.lateral, kLateralTarget));
-  EXPECT_LT(e.p0_rms, limit(c.guard.p0_rms, kP0RmsTarget));
+  const std::string report = describe("planar", c, e);
+  RecordProperty("deviation", report);
+  std::cout << report << '\n';
+  expect_within_limits(e, c.guard);
 }
 
 // The reference point is the centre of the interpenetration region (wheelrail_contact.cpp, recentre_main_patch):
@@ -185,7 +97,7 @@ TEST_F(FlangeReference, ReferencePointMatchesContact) {
   CTAB_REQUIRE_SHARED();
   for (const char* loading : {"vertical_load", "normal_force"}) {
     for (double dy : {6.5, 7.5}) {
-      const Errors e = measure(Case{loading, dy, dy < 7 ? "p6p50" : "p7p50", {}});
+      const Deviation e = measure(Case{loading, dy, dy < 7 ? "p6p50" : "p7p50", {}});
       EXPECT_LT(std::abs(e.rail_point_mm), 0.02) << loading << " dy " << dy << " mm";
     }
   }
@@ -209,6 +121,4 @@ INSTANTIATE_TEST_SUITE_P(Planar, FlangeReference,
                                            Case{"normal_force", 5.5, "p5p50", {0, 0, 0, 1.45, 0.025, 0}},
                                            Case{"normal_force", 6.5, "p6p50", {0, 0, 0, 0.35, 0, 0.07}},
                                            Case{"normal_force", 7.5, "p7p50", {0.095, 0, 0, 0, 0, 0.18}}),
-                         [](const ::testing::TestParamInfo<Case>& param) {
-                           return std::string(param.param.loading) + "_" + param.param.tag;
-                         });
+                         case_name);
