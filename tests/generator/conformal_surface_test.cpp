@@ -9,8 +9,6 @@
 
 #include "ctab/contact/material.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
-#include "ctab/sweep/table_config.hpp"
-#include "ctab/sweep/table_generator.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 
@@ -91,39 +89,4 @@ TEST_F(ConformalSurface, ApproachLoading) {
   const ContactPatch& p = c.patches.front();
   EXPECT_NEAR(p.approach_m, 0.1e-3 * std::cos(p.plane_angle_rad), 1e-12);
   EXPECT_GT(p.normal_force_N, 0.0);
-}
-
-// Forces that add up over a whole conformal table (wheelset, built-in profiles, dy -12...12 mm, 20 and 150 kN): every
-// case converges and sum force_vertical_N over a wheel's patches equals the vertical load to 1e-9.
-TEST(ConformalTable, VerticalLoadBalancesEverywhere) {
-  const TableConfig config = parse_table_config(R"(
-[solver]
-mode = "wheelset"
-surface = "conformal"
-[axes]
-lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.5e-3 }
-vertical_load_N = [20e3, 150e3]
-[output]
-strip_samples = 8
-)",
-                                                "conformal_balance.toml");
-  GeneratorInfo info;
-  info.threads = 2;
-  const ctab::tables::Table table = generate_table(config, info);
-  EXPECT_EQ(table.text_attributes.at("surface"), "conformal");
-  double worst = 0.0;
-  for (std::size_t i = 0; i < table.n_dy(); ++i)
-    for (std::size_t j = 0; j < table.n_second(); ++j)
-      for (std::size_t wheel = 0; wheel < ctab::tables::kWheels; ++wheel) {
-        EXPECT_TRUE(ctab::tables::is_success(table.status[table.wheel_index(i, j, wheel)]))
-            << "dy " << table.lateral_displacement_m[i] << " m, load " << table.second_axis[j] << " N";
-        double sum = 0.0;
-        for (std::size_t slot = 0; slot < table.n_slots; ++slot) {
-          const std::size_t k = table.patch_index(i, j, wheel, slot);
-          if (table.patch.present[k]) sum += table.patch.force_vertical_N[k];
-        }
-        worst = std::max(worst, std::abs(sum - table.second_axis[j]) / table.second_axis[j]);
-      }
-  std::cout << "conformal wheelset table: worst relative miss of sum force_vertical_N " << worst << '\n';
-  EXPECT_LE(worst, 1e-9);
 }

@@ -28,9 +28,12 @@ Table generate_and_read_back(const std::string& config, const std::string& name)
   return back;
 }
 
-// Largest relative miss of sum force_vertical_N against the vertical load over every case and wheel; every patch's
-// components must also be those of its normal force along the contact-plane normal.
-double worst_vertical_miss(const Table& table) {
+enum class Surface { Planar, Conformal };
+
+// Largest relative miss of sum force_vertical_N against the vertical load over every case and wheel. A planar patch's
+// components must be those of its normal force along the contact-plane normal; a conformal patch's (strips with
+// their own normals) a resultant no larger than the normal force, in the direction contact_angle_rad.
+double worst_vertical_miss(const Table& table, Surface surface = Surface::Planar) {
   double worst = 0.0;
   for (std::size_t i = 0; i < table.n_dy(); ++i)
     for (std::size_t j = 0; j < table.n_second(); ++j)
@@ -44,8 +47,14 @@ double worst_vertical_miss(const Table& table) {
           if (!table.patch.present[k]) continue;
           sum += table.patch.force_vertical_N[k];
           const double n = table.patch.normal_force_N[k], delta = table.patch.plane_angle_rad[k];
-          EXPECT_NEAR(table.patch.force_vertical_N[k], n * std::cos(delta), 1e-12 * n);
-          EXPECT_NEAR(table.patch.force_lateral_N[k], -n * std::sin(delta), 1e-12 * n);
+          const double vertical = table.patch.force_vertical_N[k], lateral = table.patch.force_lateral_N[k];
+          if (surface == Surface::Planar) {
+            EXPECT_NEAR(vertical, n * std::cos(delta), 1e-12 * n);
+            EXPECT_NEAR(lateral, -n * std::sin(delta), 1e-12 * n);
+          } else {
+            EXPECT_LE(std::hypot(vertical, lateral), n * (1.0 + 1e-12));
+            EXPECT_NEAR(-std::atan2(lateral, vertical), table.patch.contact_angle_rad[k], 1e-12);
+          }
         }
         worst = std::max(worst, std::abs(sum - table.second_axis[j]) / table.second_axis[j]);
       }
@@ -81,6 +90,25 @@ strip_samples = 8
                                              "force_balance_builtin");
   const double miss = worst_vertical_miss(table);
   std::printf("built-in wheelset, dy -12..12 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
+  EXPECT_LE(miss, 1e-9);
+}
+
+// The conformal surface (strips with their own normals) over a whole wheelset table, built-in profiles.
+TEST(ForceBalance, ConformalWheelsetWholeRange) {
+  const Table table = generate_and_read_back(R"(
+[solver]
+mode = "wheelset"
+surface = "conformal"
+[axes]
+lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.5e-3 }
+vertical_load_N = [20e3, 150e3]
+[output]
+strip_samples = 8
+)",
+                                             "force_balance_conformal");
+  EXPECT_EQ(table.text_attributes.at("surface"), "conformal");
+  const double miss = worst_vertical_miss(table, Surface::Conformal);
+  std::printf("conformal wheelset, dy -12..12 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
   EXPECT_LE(miss, 1e-9);
 }
 
