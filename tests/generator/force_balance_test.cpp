@@ -77,37 +77,26 @@ TEST(ForceBalance, ManchesterSingleWheelThroughFlangeRootAndFlank) {
   EXPECT_LE(miss, 1e-9);
 }
 
+// Built-in profiles, wheelset, dy -12..12 mm at 20 and 150 kN on the given surface: the worst miss over the table.
+double wheelset_whole_range_miss(Surface surface, const char* dy_step_m) {
+  std::ostringstream config;
+  config << "[solver]\nmode = \"wheelset\"\nsurface = \"" << (surface == Surface::Planar ? "planar" : "conformal")
+         << "\"\n[axes]\nlateral_displacement_m = { start = -12e-3, stop = 12e-3, step = " << dy_step_m
+         << " }\nvertical_load_N = [20e3, 150e3]\n[output]\nstrip_samples = 8\n";
+  const Table table = generate_and_read_back(config.str(), std::string("force_balance_wheelset_") + dy_step_m);
+  EXPECT_EQ(table.text_attributes.at("surface"), surface == Surface::Planar ? "planar" : "conformal");
+  return worst_vertical_miss(table, surface);
+}
+
 TEST(ForceBalance, BuiltinWheelsetWholeRange) {
-  const Table table = generate_and_read_back(R"(
-[solver]
-mode = "wheelset"
-[axes]
-lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.25e-3 }
-vertical_load_N = [20e3, 150e3]
-[output]
-strip_samples = 8
-)",
-                                             "force_balance_builtin");
-  const double miss = worst_vertical_miss(table);
+  const double miss = wheelset_whole_range_miss(Surface::Planar, "0.25e-3");
   std::printf("built-in wheelset, dy -12..12 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
   EXPECT_LE(miss, 1e-9);
 }
 
-// The conformal surface (strips with their own normals) over a whole wheelset table, built-in profiles.
+// The conformal surface (strips with their own normals) over a whole wheelset table.
 TEST(ForceBalance, ConformalWheelsetWholeRange) {
-  const Table table = generate_and_read_back(R"(
-[solver]
-mode = "wheelset"
-surface = "conformal"
-[axes]
-lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.5e-3 }
-vertical_load_N = [20e3, 150e3]
-[output]
-strip_samples = 8
-)",
-                                             "force_balance_conformal");
-  EXPECT_EQ(table.text_attributes.at("surface"), "conformal");
-  const double miss = worst_vertical_miss(table, Surface::Conformal);
+  const double miss = wheelset_whole_range_miss(Surface::Conformal, "0.5e-3");
   std::printf("conformal wheelset, dy -12..12 mm: worst relative miss of sum force_vertical_N %.3g\n", miss);
   EXPECT_LE(miss, 1e-9);
 }
