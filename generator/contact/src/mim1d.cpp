@@ -550,6 +550,18 @@ void Mim1dSolver::save_warm_start(const NormalSolution& solved, Mim1dWarmStart& 
   if (!(out.depth_m > 0.0)) out.clear();
 }
 
+std::optional<double> Mim1dSolver::approach_sensitivity(const std::vector<double>& dh_m, double load_change_N) const {
+  const auto n = static_cast<Eigen::Index>(active_.size());
+  if (options_.update != Mim1dUpdate::Newton || n == 0 || factorisation_.rows() != n || dh_m.size() != grid_.size())
+    return std::nullopt;
+  Eigen::VectorXd dh(n);
+  for (Eigen::Index r = 0; r < n; ++r) dh(r) = dh_m[active_[static_cast<std::size_t>(r)]];
+  const double unit = factorisation_.solve(Eigen::VectorXd::Ones(n)).sum();
+  const double change = (load_change_N + factorisation_.solve(dh).sum()) / unit;
+  if (!std::isfinite(change)) return std::nullopt;
+  return change;
+}
+
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   return solve_for_load(normal_force_N, Mim1dWarmStart{});
 }

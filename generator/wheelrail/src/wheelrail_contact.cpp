@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/mim1d.hpp"
@@ -83,6 +84,10 @@ struct PatchProblem {
   GapProfile gap;                    // y_m holds s
   std::vector<double> rail_y;        // planar: rail y below each sample; conformal: rail y of the surface point
   std::vector<double> normal_angle;  // each sample's normal (inclination from the vertical, < 0 on the gauge side)
+  // Each sample's d(separation)/d(dz), the vertical shift of the wheel seen along its normal: cos(delta_w) /
+  // cos(delta_w - alpha) (intersect_wheel's Newton: f = z_w(y - n sn) + dz - z - n c); for gap_slope.
+  std::vector<double> approach_weight;
+  std::vector<double> strip_gap_rate;  // scratch (gap_slope): d h_i / d gap_dz at each strip of the solver's grid
   std::unique_ptr<Mim1dSolver> solver;
   NormalSolution solution;
 };
@@ -147,7 +152,7 @@ class PatchBuilder {
 
  private:
   struct Sample {
-    double s = 0, h = 0, y_rail = 0, A = 0, B = 0, angle = 0;
+    double s = 0, h = 0, y_rail = 0, A = 0, B = 0, angle = 0, weight = 1;
   };
   // State carried from sample to sample along one side: Newton guesses and, conformal, the last surface point.
   struct SampleState {
@@ -157,7 +162,7 @@ class PatchBuilder {
   };
 
   static std::vector<std::vector<double>*> columns(PatchProblem& p) {
-    return {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y, &p.normal_angle};
+    return {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y, &p.normal_angle, &p.approach_weight};
   }
   static void clear(PatchProblem& p) {
     for (std::vector<double>* v : columns(p)) v->clear();
@@ -178,6 +183,7 @@ class PatchBuilder {
       p.gap.B_per_m.push_back(sample.B);
       p.rail_y.push_back(sample.y_rail);
       p.normal_angle.push_back(sample.angle);
+      p.approach_weight.push_back(sample.weight);
       if (sample.h + p.gap_dz * p.c > depth || k > kMaxSamplesPerSide) break;
     }
   }
@@ -255,6 +261,7 @@ class PatchBuilder {
     out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
     out.A = std::cos(angle) / (2.0 * w.radius_m);  // rolling radius seen along the normal: r / cos(angle)
     out.h = state.n_rail - state.n_wheel;
+    out.weight = 1.0 / (std::cos(angle) + w.slope * std::sin(angle));  // dn_wheel / dz
   }
 
   // Rail and wheel (lowered by dz) along the line: Newton on n for each; false outside the profiles.
@@ -540,12 +547,22 @@ class WheelCase {
         settled_force = force;
         settled_vertical = vertical;
       }
+      // The secant measures the slope where it can (it also sees what the first-order geometry misses: the conformal
+      // surface moving with x, an active set that changes; measured at dy 6.3 mm conformal: secant -0.68, geometry
+      // +0.002); the first pass takes it from the geometry (gap_slope) instead of 0.
       double slope = 0.0;
       if (pass > 0 && main.gap_dz != previous_x) {
         const double at_this_force = previous_dz * std::cbrt(std::pow(force / previous_force, 2.0));
         slope = std::clamp((dz - at_this_force) / (main.gap_dz - previous_x), kMinGapSlope, kMaxGapSlope);
+      } else if (const std::optional<double> geometric = gap_slope(main)) {
+        slope = std::clamp(*geometric, kMinGapSlope, kMaxGapSlope);
       }
-      const double predicted = dz * std::cbrt(std::pow(next_force / force, 2.0));
+      // dz ~ F^q: Hertz q = 2/3; MIM-1D the local exponent from the strip solve (approach_sensitivity with dF).
+      double exponent = 2.0 / 3.0;
+      if (next_force != force)
+        if (const std::optional<double> per_load = load_rate(main); per_load && *per_load > 0.0)
+          exponent = *per_load * force / dz;
+      const double predicted = dz * std::pow(next_force / force, exponent);
       previous_x = main.gap_dz;
       previous_dz = dz;
       previous_force = force;
@@ -555,6 +572,29 @@ class WheelCase {
     detail_ =
         "the vertical approach at which the gap is sampled did not settle in " + std::to_string(kGapPasses) + " passes";
     return SolveStatus::MaxIterations;
+  }
+
+  // d dz / d x of the solved approach dz on the sampling approach x at this force, to first order: every strip's h
+  // (sampled at x, plus x c) moves by c - w_i (w_i = PatchProblem::approach_weight at the strip), and the strip
+  // solver turns that into d delta = c d dz (Mim1dSolver::approach_sensitivity). Empty for the other rungs.
+  std::optional<double> gap_slope(PatchProblem& p) const {
+    if (options_.method != NormalMethod::Mim1d || !p.solver) return std::nullopt;
+    const StripGrid& grid = p.solver->grid();
+    p.strip_gap_rate.resize(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      p.strip_gap_rate[i] = p.c - interpolate(p.gap.y_m, p.approach_weight, grid.y_m[i]);
+    const std::optional<double> approach_rate = p.solver->approach_sensitivity(p.strip_gap_rate);
+    if (!approach_rate) return std::nullopt;
+    return *approach_rate / p.c;
+  }
+
+  // d dz / d F of the main patch's last strip solve at the same sampling approach [m/N]; empty for the other rungs.
+  std::optional<double> load_rate(PatchProblem& p) const {
+    if (options_.method != NormalMethod::Mim1d || !p.solver) return std::nullopt;
+    p.strip_gap_rate.assign(p.solver->grid().size(), 0.0);
+    const std::optional<double> approach_rate = p.solver->approach_sensitivity(p.strip_gap_rate, 1.0);
+    if (!approach_rate) return std::nullopt;
+    return *approach_rate / p.c;
   }
 
   // One strip solve of the main patch: warm-started from the neighbour (pass 0, when given) or from the last

@@ -58,6 +58,14 @@ class Mim1dSolver {
   //! succeeded with contact.
   void save_warm_start(const NormalSolution& solved, Mim1dWarmStart& out) const;
 
+  //! First-order change of the last solve's approach [m] when every strip's separation changes by dh_m[i] (one
+  //! entry per strip of grid()) and the total load by load_change_N: the bordered system at the solution,
+  //! J dN - d(delta) 1 = -dh and 1^T dN = dF, gives d(delta) = (dF + 1^T J^-1 dh) / 1^T J^-1 1, here from the last
+  //! Jacobian factorisation of the solve (a prediction only: that of the step before convergence). Empty when it
+  //! does not match the active set (fixed-point update, or no contact).
+  [[nodiscard]] std::optional<double> approach_sensitivity(const std::vector<double>& dh_m,
+                                                           double load_change_N = 0.0) const;
+
   [[nodiscard]] const StripGrid& grid() const noexcept { return grid_; }
   //! True when this solver was set up for the same material and options (so reset() may reuse it).
   [[nodiscard]] bool matches(double E_star_Pa, const Mim1dOptions& options) const noexcept;
