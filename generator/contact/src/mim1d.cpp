@@ -562,6 +562,29 @@ std::optional<double> Mim1dSolver::approach_sensitivity(const std::vector<double
   return change;
 }
 
+bool Mim1dSolver::shift_warm_start(const std::vector<double>& dh_m, double load_change_N,
+                                   Mim1dWarmStart& start) const {
+  const auto n = static_cast<Eigen::Index>(active_.size());
+  if (options_.update != Mim1dUpdate::Newton || n == 0 || factorisation_.rows() != n || dh_m.size() != grid_.size() ||
+      start.empty() || start.first_strip != first_strip_index() + static_cast<long>(active_.front()))
+    return false;
+  Eigen::VectorXd dh(n);
+  for (Eigen::Index r = 0; r < n; ++r) dh(r) = dh_m[active_[static_cast<std::size_t>(r)]];
+  const Eigen::VectorXd unit = factorisation_.solve(Eigen::VectorXd::Ones(n));
+  const Eigen::VectorXd shift = factorisation_.solve(dh);
+  const double d_approach = (load_change_N + shift.sum()) / unit.sum();
+  if (!std::isfinite(d_approach)) return false;
+  for (Eigen::Index r = 0; r < n; ++r) {
+    double& load = start.loads_N[active_[static_cast<std::size_t>(r)] - active_.front()];
+    const double predicted = load + d_approach * unit(r) - shift(r);
+    load = predicted > 0.0 ? predicted : kWarmStartShrink * load;
+  }
+  const auto deepest =
+      static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  start.depth_m += d_approach - dh_m[deepest];
+  return true;
+}
+
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   return solve_for_load(normal_force_N, Mim1dWarmStart{});
 }

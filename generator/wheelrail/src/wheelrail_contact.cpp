@@ -563,10 +563,12 @@ class WheelCase {
         if (const std::optional<double> per_load = load_rate(main); per_load && *per_load > 0.0)
           exponent = *per_load * force / dz;
       const double predicted = dz * std::pow(next_force / force, exponent);
+      const double next_x = (predicted - slope * main.gap_dz) / (1.0 - slope);
+      shift_pass_start(main, next_x - main.gap_dz, next_force - force);
       previous_x = main.gap_dz;
       previous_dz = dz;
       previous_force = force;
-      main.gap_dz = (predicted - slope * main.gap_dz) / (1.0 - slope);
+      main.gap_dz = next_x;
       force = next_force;
     }
     detail_ =
@@ -579,19 +581,32 @@ class WheelCase {
   // solver turns that into d delta = c d dz (Mim1dSolver::approach_sensitivity). Empty for the other rungs.
   std::optional<double> gap_slope(PatchProblem& p) const {
     if (options_.method != NormalMethod::Mim1d || !p.solver) return std::nullopt;
-    const StripGrid& grid = p.solver->grid();
-    p.strip_gap_rate.resize(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i)
-      p.strip_gap_rate[i] = p.c - interpolate(p.gap.y_m, p.approach_weight, grid.y_m[i]);
+    fill_strip_gap_rate(p, 1.0);
     const std::optional<double> approach_rate = p.solver->approach_sensitivity(p.strip_gap_rate);
     if (!approach_rate) return std::nullopt;
     return *approach_rate / p.c;
   }
 
+  // p.strip_gap_rate: the change of every strip's h (sampled at gap_dz, plus gap_dz c) when gap_dz moves by dx.
+  static void fill_strip_gap_rate(PatchProblem& p, double dx) {
+    const StripGrid& grid = p.solver->grid();
+    p.strip_gap_rate.resize(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      p.strip_gap_rate[i] = dx * (p.c - interpolate(p.gap.y_m, p.approach_weight, grid.y_m[i]));
+  }
+
+  // The next pass's warm start: the last solve moved to first order to the next sampling approach (x + dx) and
+  // normal force (F + dF), so that the confirming pass starts next to its solution (Mim1dSolver::shift_warm_start).
+  void shift_pass_start(PatchProblem& p, double dx, double dF) {
+    if (options_.method != NormalMethod::Mim1d || !p.solver || ws_.pass_start.empty()) return;
+    fill_strip_gap_rate(p, dx);
+    (void)p.solver->shift_warm_start(p.strip_gap_rate, dF, ws_.pass_start);
+  }
+
   // d dz / d F of the main patch's last strip solve at the same sampling approach [m/N]; empty for the other rungs.
   std::optional<double> load_rate(PatchProblem& p) const {
     if (options_.method != NormalMethod::Mim1d || !p.solver) return std::nullopt;
-    p.strip_gap_rate.assign(p.solver->grid().size(), 0.0);
+    fill_strip_gap_rate(p, 0.0);
     const std::optional<double> approach_rate = p.solver->approach_sensitivity(p.strip_gap_rate, 1.0);
     if (!approach_rate) return std::nullopt;
     return *approach_rate / p.c;

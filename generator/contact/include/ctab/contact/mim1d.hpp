@@ -66,6 +66,12 @@ class Mim1dSolver {
   [[nodiscard]] std::optional<double> approach_sensitivity(const std::vector<double>& dh_m,
                                                            double load_change_N = 0.0) const;
 
+  //! Moves `start` (save_warm_start of the last solve) to first order to the solution after every strip's
+  //! separation changed by dh_m[i] and the total load by load_change_N (the bordered system of
+  //! approach_sensitivity: dN = J^-1 (d(delta) 1 - dh)); a strip predicted non-positive keeps half its load. False,
+  //! and `start` unchanged, when no factorisation matches the last solve's active set.
+  bool shift_warm_start(const std::vector<double>& dh_m, double load_change_N, Mim1dWarmStart& start) const;
+
   [[nodiscard]] const StripGrid& grid() const noexcept { return grid_; }
   //! True when this solver was set up for the same material and options (so reset() may reuse it).
   [[nodiscard]] bool matches(double E_star_Pa, const Mim1dOptions& options) const noexcept;
