@@ -55,7 +55,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options)
-    : E_star_Pa_(E_star_Pa), options_(options) {
+    : E_star_Pa_(E_star_Pa), options_(options), tolerance_(options.tolerance) {
   if (!(std::isfinite(E_star_Pa) && E_star_Pa > 0.0))
     throw InputError("material", 0, "effective modulus must be positive and finite");
   if (!(options.tolerance > 0.0 && options.tolerance < 1e-2)) throw InputError("tolerance", 0, "must lie in (0, 0.01)");
@@ -261,12 +261,12 @@ void Mim1dSolver::gather_active_system(double approach_m) {
 
 Mim1dSolver::SetCheck Mim1dSolver::check_active_set(const InnerState& state, double residual, double force_mismatch) {
   const bool force_converged =
-      !state.target_load_N || std::abs(force_mismatch) <= options_.tolerance * *state.target_load_N;
+      !state.target_load_N || std::abs(force_mismatch) <= tolerance_ * *state.target_load_N;
   // Newton converges quadratically: once the residual is at tolerance a step below sqrt(tol) is final.
   const double change_tolerance =
-      options_.update == Mim1dUpdate::Newton ? std::sqrt(options_.tolerance) : options_.tolerance;
+      options_.update == Mim1dUpdate::Newton ? std::sqrt(tolerance_) : tolerance_;
   const bool converged_on_set =
-      state.last_change <= change_tolerance && residual <= options_.tolerance && force_converged;
+      state.last_change <= change_tolerance && residual <= tolerance_ && force_converged;
   // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
   // and again at convergence.
   const bool roughly_converged =
@@ -282,7 +282,7 @@ void Mim1dSolver::find_violators(double approach_m, double depth) {
   penetrations_.clear();
   auto check = [&](std::size_t i) {
     const double gap = grid_.h_m[i] + displacement_at(i) - approach_m;
-    if (gap < -options_.tolerance * depth) violators_.push_back(i), penetrations_.push_back(-gap);
+    if (gap < -tolerance_ * depth) violators_.push_back(i), penetrations_.push_back(-gap);
   };
   const std::size_t n_all = grid_.size();
   for (std::size_t i = 0; i < n_all;) {
@@ -589,6 +589,14 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   return solve_for_load(normal_force_N, Mim1dWarmStart{});
 }
 
+NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start,
+                                           double tolerance) {
+  tolerance_ = std::max(tolerance, options_.tolerance);
+  NormalSolution solution = solve_for_load(normal_force_N, warm_start);
+  tolerance_ = options_.tolerance;
+  return solution;
+}
+
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start) {
   const auto start = std::chrono::steady_clock::now();
   int iterations = 0;
@@ -664,7 +672,7 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     for (const std::size_t i : active_) force += load_[i];
     const double mismatch = force - normal_force_N;
     const double force_residual = std::abs(mismatch) / normal_force_N;
-    if (force_residual <= options_.tolerance) return finish(SolveStatus::Converged, approach, outer, force_residual);
+    if (force_residual <= tolerance_) return finish(SolveStatus::Converged, approach, outer, force_residual);
     (mismatch < 0.0 ? lower : upper) = approach;
     // Newton on delta with dN/d(delta) = 1^T J^-1 1 from the last factorisation.
     const auto n = static_cast<Eigen::Index>(active_.size());

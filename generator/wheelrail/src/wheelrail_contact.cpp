@@ -56,6 +56,10 @@ constexpr int kRecentrePasses = 4;
 // with a vertical load 5-15 (up to about 40 at dy 6.6 mm, where the patch spreads from the flank to the root).
 constexpr double kGapApproachTolerance_m = 1e-9;
 constexpr double kVerticalBalance = 1e-10;
+// A first pass from the Hertz estimate only predicts the next x (it is never the last: the gap is re-sampled), so it
+// is solved to this looser relative tolerance: the approach to ~1e-6 x 0.1 mm = 1e-10 m, a tenth of
+// kGapApproachTolerance_m (chosen; Newton's last one or two iterations saved).
+constexpr double kPredictorTolerance = 1e-6;
 constexpr int kGapPasses = 60;
 constexpr int kStripSolveRetries = 4;  // failed strip solves after a successful pass, each halfway back (chosen)
 // Slope d dz / d x of the solved approach on the sampling approach: negative where the vertical shift reaches some
@@ -504,7 +508,8 @@ class WheelCase {
   // failed (main.solution holds why), else InvalidInput or MaxIterations with detail_.
   SolveStatus solve_main_for_load(PatchProblem& main, double depth) {
     // Start from the previous window's or reference point's solve, else from Hertz at the reference minimum.
-    main.gap_dz = result_.vertical_approach_m > 0.0
+    const bool from_hertz = !(result_.vertical_approach_m > 0.0);
+    main.gap_dz = !from_hertz
                       ? result_.vertical_approach_m
                       : expected_approach(side_, main.reference, dy_, roll_, E_star_, load_, value_) /
                             std::max(std::cos(main.reference.contact_angle_rad), kCosineFloor);
@@ -518,7 +523,8 @@ class WheelCase {
     for (int pass = 0; pass < kGapPasses; ++pass) {
       if (!build_main(main, depth)) return SolveStatus::InvalidInput;
       if (pass == 0 && load_ == LoadKind::VerticalForce) force = value_ / main.c;
-      solve_main_once(main, force, pass > 0);
+      const bool predictor = pass == 0 && from_hertz;
+      solve_main_once(main, force, pass > 0, predictor ? kPredictorTolerance : options_.mim1d.tolerance);
       if (!is_success(main.solution.status)) {
         // The strip solve can cycle for one gap and load (max-iterations): after a successful pass, go halfway back
         // towards it (x and F) and on, at most kStripSolveRetries times. Not enough where the balancing load itself
@@ -533,7 +539,7 @@ class WheelCase {
       const double dz = main.solution.approach_m / main.c;
       result_.vertical_approach_m = dz;
       const double vertical = load_ == LoadKind::VerticalForce ? solution_force(main).vertical_N : value_;
-      const bool settled = std::abs(dz - main.gap_dz) <= kGapApproachTolerance_m;
+      const bool settled = !predictor && std::abs(dz - main.gap_dz) <= kGapApproachTolerance_m;
       if (settled && std::abs(vertical - value_) <= kVerticalBalance * value_) return SolveStatus::Converged;
       // The force moves only once x has settled (updating both at once alternates, conformal at dy 6.63 mm): a secant
       // step on vertical(F) from the last settled pass, the first time F V / vertical.
@@ -613,16 +619,17 @@ class WheelCase {
   }
 
   // One strip solve of the main patch: warm-started from the neighbour (pass 0, when given) or from the last
-  // successful pass of this case (kept through a failed pass, so that a retry starts from it), else cold.
-  void solve_main_once(PatchProblem& main, double force, bool from_previous_pass) {
+  // successful pass of this case (kept through a failed pass, so that a retry starts from it), else cold; MIM-1D to
+  // the relative tolerance given (kPredictorTolerance for a first pass that only predicts).
+  void solve_main_once(PatchProblem& main, double force, bool from_previous_pass, double tolerance) {
     if (options_.method != NormalMethod::Mim1d) {
       main.solution = solve_other_rung(main, Loading::normal_force(force));
     } else if (from_previous_pass) {
-      main.solution = main.solver->solve_for_load(force, ws_.pass_start);
+      main.solution = main.solver->solve_for_load(force, ws_.pass_start, tolerance);
     } else if (warm_ != nullptr) {
-      main.solution = main.solver->solve_for_load(force, *warm_);
+      main.solution = main.solver->solve_for_load(force, *warm_, tolerance);
     } else {
-      main.solution = main.solver->solve_for_load(force);
+      main.solution = main.solver->solve_for_load(force, Mim1dWarmStart{}, tolerance);
     }
     if (options_.method == NormalMethod::Mim1d && is_success(main.solution.status))
       main.solver->save_warm_start(main.solution, ws_.pass_start);

@@ -54,6 +54,9 @@ class Mim1dSolver {
   //! load and interpenetrate at its depth form the starting set; should the warm solve fail, the cold solve runs
   //! (the iterations of both are counted). Converges to the same tolerance as the cold start.
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N, const Mim1dWarmStart& start);
+  //! The same to a looser relative tolerance (at least Mim1dOptions::tolerance) for loads, force and the Eq. 4
+  //! check: for a solve that only predicts (the wheel-rail contact's first gap pass, whose gap is re-sampled).
+  [[nodiscard]] NormalSolution solve_for_load(double normal_force_N, const Mim1dWarmStart& start, double tolerance);
   //! The solve that gave `solved` (the last one) as a warm start for a neighbouring gap; cleared unless it
   //! succeeded with contact.
   void save_warm_start(const NormalSolution& solved, Mim1dWarmStart& out) const;
@@ -147,6 +150,7 @@ class Mim1dSolver {
   StripGrid grid_;
   double E_star_Pa_;
   Mim1dOptions options_;
+  double tolerance_;  // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
   double b_;                                                               // strip half-width [m]
   double kernel_scale_;                                                    // 2 / (pi^2 E* b) [m/N]
   std::vector<StripHertz> compliance_;                                     // local Hertz data per strip (all strips)
