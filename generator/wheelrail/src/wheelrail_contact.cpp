@@ -544,8 +544,11 @@ class WheelCase {
       const bool settled = !predictor && std::abs(dz - main.gap_dz) <= kGapApproachTolerance_m;
       if (settled && std::abs(vertical - value_) <= kVerticalBalance * value_) return SolveStatus::Converged;
       // The force moves only once x has settled (updating both at once alternates, conformal at dy 6.63 mm): a secant
-      // step on vertical(F) from the last settled pass, the first time F V / vertical.
+      // step on vertical(F) from the last settled pass, the first time F V / vertical. The predictor pass already
+      // takes the ratio step (the share of the load carried vertically hardly depends on x), not recorded for the
+      // secant.
       double next_force = force;
+      if (predictor && vertical > 0.0) next_force = force * value_ / vertical;
       if (settled && vertical > 0.0) {
         next_force = force * value_ / vertical;
         if (settled_force > 0.0 && vertical != settled_vertical) {
