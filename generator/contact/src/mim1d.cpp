@@ -55,7 +55,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options)
-    : E_star_Pa_(E_star_Pa), options_(options) {
+    : E_star_Pa_(E_star_Pa), options_(options), tolerance_(options.tolerance) {
   if (!(std::isfinite(E_star_Pa) && E_star_Pa > 0.0))
     throw InputError("material", 0, "effective modulus must be positive and finite");
   if (!(options.tolerance > 0.0 && options.tolerance < 1e-2)) throw InputError("tolerance", 0, "must lie in (0, 0.01)");
@@ -261,12 +261,12 @@ void Mim1dSolver::gather_active_system(double approach_m) {
 
 Mim1dSolver::SetCheck Mim1dSolver::check_active_set(const InnerState& state, double residual, double force_mismatch) {
   const bool force_converged =
-      !state.target_load_N || std::abs(force_mismatch) <= options_.tolerance * *state.target_load_N;
+      !state.target_load_N || std::abs(force_mismatch) <= tolerance_ * *state.target_load_N;
   // Newton converges quadratically: once the residual is at tolerance a step below sqrt(tol) is final.
   const double change_tolerance =
-      options_.update == Mim1dUpdate::Newton ? std::sqrt(options_.tolerance) : options_.tolerance;
+      options_.update == Mim1dUpdate::Newton ? std::sqrt(tolerance_) : tolerance_;
   const bool converged_on_set =
-      state.last_change <= change_tolerance && residual <= options_.tolerance && force_converged;
+      state.last_change <= change_tolerance && residual <= tolerance_ && force_converged;
   // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
   // and again at convergence.
   const bool roughly_converged =
@@ -282,7 +282,7 @@ void Mim1dSolver::find_violators(double approach_m, double depth) {
   penetrations_.clear();
   auto check = [&](std::size_t i) {
     const double gap = grid_.h_m[i] + displacement_at(i) - approach_m;
-    if (gap < -options_.tolerance * depth) violators_.push_back(i), penetrations_.push_back(-gap);
+    if (gap < -tolerance_ * depth) violators_.push_back(i), penetrations_.push_back(-gap);
   };
   const std::size_t n_all = grid_.size();
   for (std::size_t i = 0; i < n_all;) {
@@ -550,8 +550,51 @@ void Mim1dSolver::save_warm_start(const NormalSolution& solved, Mim1dWarmStart& 
   if (!(out.depth_m > 0.0)) out.clear();
 }
 
+std::optional<double> Mim1dSolver::approach_sensitivity(const std::vector<double>& dh_m, double load_change_N) const {
+  const auto n = static_cast<Eigen::Index>(active_.size());
+  if (options_.update != Mim1dUpdate::Newton || n == 0 || factorisation_.rows() != n || dh_m.size() != grid_.size())
+    return std::nullopt;
+  Eigen::VectorXd dh(n);
+  for (Eigen::Index r = 0; r < n; ++r) dh(r) = dh_m[active_[static_cast<std::size_t>(r)]];
+  const double unit = factorisation_.solve(Eigen::VectorXd::Ones(n)).sum();
+  const double change = (load_change_N + factorisation_.solve(dh).sum()) / unit;
+  if (!std::isfinite(change)) return std::nullopt;
+  return change;
+}
+
+bool Mim1dSolver::shift_warm_start(const std::vector<double>& dh_m, double load_change_N,
+                                   Mim1dWarmStart& start) const {
+  const auto n = static_cast<Eigen::Index>(active_.size());
+  if (options_.update != Mim1dUpdate::Newton || n == 0 || factorisation_.rows() != n || dh_m.size() != grid_.size() ||
+      start.empty() || start.first_strip != first_strip_index() + static_cast<long>(active_.front()))
+    return false;
+  Eigen::VectorXd dh(n);
+  for (Eigen::Index r = 0; r < n; ++r) dh(r) = dh_m[active_[static_cast<std::size_t>(r)]];
+  const Eigen::VectorXd unit = factorisation_.solve(Eigen::VectorXd::Ones(n));
+  const Eigen::VectorXd shift = factorisation_.solve(dh);
+  const double d_approach = (load_change_N + shift.sum()) / unit.sum();
+  if (!std::isfinite(d_approach)) return false;
+  for (Eigen::Index r = 0; r < n; ++r) {
+    double& load = start.loads_N[active_[static_cast<std::size_t>(r)] - active_.front()];
+    const double predicted = load + d_approach * unit(r) - shift(r);
+    load = predicted > 0.0 ? predicted : kWarmStartShrink * load;
+  }
+  const auto deepest =
+      static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
+  start.depth_m += d_approach - dh_m[deepest];
+  return true;
+}
+
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   return solve_for_load(normal_force_N, Mim1dWarmStart{});
+}
+
+NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start,
+                                           double tolerance) {
+  tolerance_ = std::max(tolerance, options_.tolerance);
+  NormalSolution solution = solve_for_load(normal_force_N, warm_start);
+  tolerance_ = options_.tolerance;
+  return solution;
 }
 
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start) {
@@ -629,7 +672,7 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     for (const std::size_t i : active_) force += load_[i];
     const double mismatch = force - normal_force_N;
     const double force_residual = std::abs(mismatch) / normal_force_N;
-    if (force_residual <= options_.tolerance) return finish(SolveStatus::Converged, approach, outer, force_residual);
+    if (force_residual <= tolerance_) return finish(SolveStatus::Converged, approach, outer, force_residual);
     (mismatch < 0.0 ? lower : upper) = approach;
     // Newton on delta with dN/d(delta) = 1^T J^-1 1 from the last factorisation.
     const auto n = static_cast<Eigen::Index>(active_.size());

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/mim1d.hpp"
@@ -55,6 +56,12 @@ constexpr int kRecentrePasses = 4;
 // with a vertical load 5-15 (up to about 40 at dy 6.6 mm, where the patch spreads from the flank to the root).
 constexpr double kGapApproachTolerance_m = 1e-9;
 constexpr double kVerticalBalance = 1e-10;
+// A first pass from the Hertz estimate only predicts the next x (it is never the last: the gap is re-sampled), so it
+// is solved to this looser relative tolerance: the approach to ~1e-7 x 0.1 mm = 1e-11 m, 1 % of
+// kGapApproachTolerance_m. Measured (default table, pass 0): 7.21 MIM-1D iterations at 1e-11, 6.62 at 1e-8, 6.25 at
+// 1e-7, 5.97 at 1e-6; 1e-6 moves the final x by up to the tolerance between warm and cold starts (warm_start_test:
+// strip fields 5e-8 of their largest value, over its 1e-8), 1e-7 not (1.6e-9, as at 1e-8).
+constexpr double kPredictorTolerance = 1e-7;
 constexpr int kGapPasses = 60;
 constexpr int kStripSolveRetries = 4;  // failed strip solves after a successful pass, each halfway back (chosen)
 // Slope d dz / d x of the solved approach on the sampling approach: negative where the vertical shift reaches some
@@ -83,6 +90,10 @@ struct PatchProblem {
   GapProfile gap;                    // y_m holds s
   std::vector<double> rail_y;        // planar: rail y below each sample; conformal: rail y of the surface point
   std::vector<double> normal_angle;  // each sample's normal (inclination from the vertical, < 0 on the gauge side)
+  // Each sample's d(separation)/d(dz), the vertical shift of the wheel seen along its normal: cos(delta_w) /
+  // cos(delta_w - alpha) (intersect_wheel's Newton: f = z_w(y - n sn) + dz - z - n c); for gap_slope.
+  std::vector<double> approach_weight;
+  std::vector<double> strip_gap_rate;  // scratch (gap_slope): d h_i / d gap_dz at each strip of the solver's grid
   std::unique_ptr<Mim1dSolver> solver;
   NormalSolution solution;
 };
@@ -147,7 +158,7 @@ class PatchBuilder {
 
  private:
   struct Sample {
-    double s = 0, h = 0, y_rail = 0, A = 0, B = 0, angle = 0;
+    double s = 0, h = 0, y_rail = 0, A = 0, B = 0, angle = 0, weight = 1;
   };
   // State carried from sample to sample along one side: Newton guesses and, conformal, the last surface point.
   struct SampleState {
@@ -157,7 +168,7 @@ class PatchBuilder {
   };
 
   static std::vector<std::vector<double>*> columns(PatchProblem& p) {
-    return {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y, &p.normal_angle};
+    return {&p.gap.y_m, &p.gap.h_m, &p.gap.A_per_m, &p.gap.B_per_m, &p.rail_y, &p.normal_angle, &p.approach_weight};
   }
   static void clear(PatchProblem& p) {
     for (std::vector<double>* v : columns(p)) v->clear();
@@ -178,6 +189,7 @@ class PatchBuilder {
       p.gap.B_per_m.push_back(sample.B);
       p.rail_y.push_back(sample.y_rail);
       p.normal_angle.push_back(sample.angle);
+      p.approach_weight.push_back(sample.weight);
       if (sample.h + p.gap_dz * p.c > depth || k > kMaxSamplesPerSide) break;
     }
   }
@@ -255,6 +267,7 @@ class PatchBuilder {
     out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
     out.A = std::cos(angle) / (2.0 * w.radius_m);  // rolling radius seen along the normal: r / cos(angle)
     out.h = state.n_rail - state.n_wheel;
+    out.weight = 1.0 / (std::cos(angle) + w.slope * std::sin(angle));  // dn_wheel / dz
   }
 
   // Rail and wheel (lowered by dz) along the line: Newton on n for each; false outside the profiles.
@@ -497,7 +510,8 @@ class WheelCase {
   // failed (main.solution holds why), else InvalidInput or MaxIterations with detail_.
   SolveStatus solve_main_for_load(PatchProblem& main, double depth) {
     // Start from the previous window's or reference point's solve, else from Hertz at the reference minimum.
-    main.gap_dz = result_.vertical_approach_m > 0.0
+    const bool from_hertz = !(result_.vertical_approach_m > 0.0);
+    main.gap_dz = !from_hertz
                       ? result_.vertical_approach_m
                       : expected_approach(side_, main.reference, dy_, roll_, E_star_, load_, value_) /
                             std::max(std::cos(main.reference.contact_angle_rad), kCosineFloor);
@@ -511,7 +525,8 @@ class WheelCase {
     for (int pass = 0; pass < kGapPasses; ++pass) {
       if (!build_main(main, depth)) return SolveStatus::InvalidInput;
       if (pass == 0 && load_ == LoadKind::VerticalForce) force = value_ / main.c;
-      solve_main_once(main, force, pass > 0);
+      const bool predictor = pass == 0 && from_hertz;
+      solve_main_once(main, force, pass > 0, predictor ? kPredictorTolerance : options_.mim1d.tolerance);
       if (!is_success(main.solution.status)) {
         // The strip solve can cycle for one gap and load (max-iterations): after a successful pass, go halfway back
         // towards it (x and F) and on, at most kStripSolveRetries times. Not enough where the balancing load itself
@@ -526,11 +541,14 @@ class WheelCase {
       const double dz = main.solution.approach_m / main.c;
       result_.vertical_approach_m = dz;
       const double vertical = load_ == LoadKind::VerticalForce ? solution_force(main).vertical_N : value_;
-      const bool settled = std::abs(dz - main.gap_dz) <= kGapApproachTolerance_m;
+      const bool settled = !predictor && std::abs(dz - main.gap_dz) <= kGapApproachTolerance_m;
       if (settled && std::abs(vertical - value_) <= kVerticalBalance * value_) return SolveStatus::Converged;
       // The force moves only once x has settled (updating both at once alternates, conformal at dy 6.63 mm): a secant
-      // step on vertical(F) from the last settled pass, the first time F V / vertical.
+      // step on vertical(F) from the last settled pass, the first time F V / vertical. The predictor pass already
+      // takes the ratio step (the share of the load carried vertically hardly depends on x), not recorded for the
+      // secant.
       double next_force = force;
+      if (predictor && vertical > 0.0) next_force = force * value_ / vertical;
       if (settled && vertical > 0.0) {
         next_force = force * value_ / vertical;
         if (settled_force > 0.0 && vertical != settled_vertical) {
@@ -540,16 +558,28 @@ class WheelCase {
         settled_force = force;
         settled_vertical = vertical;
       }
+      // The secant measures the slope where it can (it also sees what the first-order geometry misses: the conformal
+      // surface moving with x, an active set that changes; measured at dy 6.3 mm conformal: secant -0.68, geometry
+      // +0.002); the first pass takes it from the geometry (gap_slope) instead of 0.
       double slope = 0.0;
       if (pass > 0 && main.gap_dz != previous_x) {
         const double at_this_force = previous_dz * std::cbrt(std::pow(force / previous_force, 2.0));
         slope = std::clamp((dz - at_this_force) / (main.gap_dz - previous_x), kMinGapSlope, kMaxGapSlope);
+      } else if (const std::optional<double> geometric = gap_slope(main)) {
+        slope = std::clamp(*geometric, kMinGapSlope, kMaxGapSlope);
       }
-      const double predicted = dz * std::cbrt(std::pow(next_force / force, 2.0));
+      // dz ~ F^q: Hertz q = 2/3; MIM-1D the local exponent from the strip solve (approach_sensitivity with dF).
+      double exponent = 2.0 / 3.0;
+      if (next_force != force)
+        if (const std::optional<double> per_load = load_rate(main); per_load && *per_load > 0.0)
+          exponent = *per_load * force / dz;
+      const double predicted = dz * std::pow(next_force / force, exponent);
+      const double next_x = (predicted - slope * main.gap_dz) / (1.0 - slope);
+      shift_pass_start(main, next_x - main.gap_dz, next_force - force);
       previous_x = main.gap_dz;
       previous_dz = dz;
       previous_force = force;
-      main.gap_dz = (predicted - slope * main.gap_dz) / (1.0 - slope);
+      main.gap_dz = next_x;
       force = next_force;
     }
     detail_ =
@@ -557,17 +587,54 @@ class WheelCase {
     return SolveStatus::MaxIterations;
   }
 
+  // d dz / d x of the solved approach dz on the sampling approach x at this force, to first order: every strip's h
+  // (sampled at x, plus x c) moves by c - w_i (w_i = PatchProblem::approach_weight at the strip), and the strip
+  // solver turns that into d delta = c d dz (Mim1dSolver::approach_sensitivity). Empty for the other rungs.
+  std::optional<double> gap_slope(PatchProblem& p) const {
+    if (options_.method != NormalMethod::Mim1d || !p.solver) return std::nullopt;
+    fill_strip_gap_rate(p, 1.0);
+    const std::optional<double> approach_rate = p.solver->approach_sensitivity(p.strip_gap_rate);
+    if (!approach_rate) return std::nullopt;
+    return *approach_rate / p.c;
+  }
+
+  // p.strip_gap_rate: the change of every strip's h (sampled at gap_dz, plus gap_dz c) when gap_dz moves by dx.
+  static void fill_strip_gap_rate(PatchProblem& p, double dx) {
+    const StripGrid& grid = p.solver->grid();
+    p.strip_gap_rate.resize(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      p.strip_gap_rate[i] = dx * (p.c - interpolate(p.gap.y_m, p.approach_weight, grid.y_m[i]));
+  }
+
+  // The next pass's warm start: the last solve moved to first order to the next sampling approach (x + dx) and
+  // normal force (F + dF), so that the confirming pass starts next to its solution (Mim1dSolver::shift_warm_start).
+  void shift_pass_start(PatchProblem& p, double dx, double dF) {
+    if (options_.method != NormalMethod::Mim1d || !p.solver || ws_.pass_start.empty()) return;
+    fill_strip_gap_rate(p, dx);
+    (void)p.solver->shift_warm_start(p.strip_gap_rate, dF, ws_.pass_start);
+  }
+
+  // d dz / d F of the main patch's last strip solve at the same sampling approach [m/N]; empty for the other rungs.
+  std::optional<double> load_rate(PatchProblem& p) const {
+    if (options_.method != NormalMethod::Mim1d || !p.solver) return std::nullopt;
+    fill_strip_gap_rate(p, 0.0);
+    const std::optional<double> approach_rate = p.solver->approach_sensitivity(p.strip_gap_rate, 1.0);
+    if (!approach_rate) return std::nullopt;
+    return *approach_rate / p.c;
+  }
+
   // One strip solve of the main patch: warm-started from the neighbour (pass 0, when given) or from the last
-  // successful pass of this case (kept through a failed pass, so that a retry starts from it), else cold.
-  void solve_main_once(PatchProblem& main, double force, bool from_previous_pass) {
+  // successful pass of this case (kept through a failed pass, so that a retry starts from it), else cold; MIM-1D to
+  // the relative tolerance given (kPredictorTolerance for a first pass that only predicts).
+  void solve_main_once(PatchProblem& main, double force, bool from_previous_pass, double tolerance) {
     if (options_.method != NormalMethod::Mim1d) {
       main.solution = solve_other_rung(main, Loading::normal_force(force));
     } else if (from_previous_pass) {
-      main.solution = main.solver->solve_for_load(force, ws_.pass_start);
+      main.solution = main.solver->solve_for_load(force, ws_.pass_start, tolerance);
     } else if (warm_ != nullptr) {
-      main.solution = main.solver->solve_for_load(force, *warm_);
+      main.solution = main.solver->solve_for_load(force, *warm_, tolerance);
     } else {
-      main.solution = main.solver->solve_for_load(force);
+      main.solution = main.solver->solve_for_load(force, Mim1dWarmStart{}, tolerance);
     }
     if (options_.method == NormalMethod::Mim1d && is_success(main.solution.status))
       main.solver->save_warm_start(main.solution, ws_.pass_start);

@@ -54,9 +54,26 @@ class Mim1dSolver {
   //! load and interpenetrate at its depth form the starting set; should the warm solve fail, the cold solve runs
   //! (the iterations of both are counted). Converges to the same tolerance as the cold start.
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N, const Mim1dWarmStart& start);
+  //! The same to a looser relative tolerance (at least Mim1dOptions::tolerance) for loads, force and the Eq. 4
+  //! check: for a solve that only predicts (the wheel-rail contact's first gap pass, whose gap is re-sampled).
+  [[nodiscard]] NormalSolution solve_for_load(double normal_force_N, const Mim1dWarmStart& start, double tolerance);
   //! The solve that gave `solved` (the last one) as a warm start for a neighbouring gap; cleared unless it
   //! succeeded with contact.
   void save_warm_start(const NormalSolution& solved, Mim1dWarmStart& out) const;
+
+  //! First-order change of the last solve's approach [m] when every strip's separation changes by dh_m[i] (one
+  //! entry per strip of grid()) and the total load by load_change_N: the bordered system at the solution,
+  //! J dN - d(delta) 1 = -dh and 1^T dN = dF, gives d(delta) = (dF + 1^T J^-1 dh) / 1^T J^-1 1, here from the last
+  //! Jacobian factorisation of the solve (a prediction only: that of the step before convergence). Empty when it
+  //! does not match the active set (fixed-point update, or no contact).
+  [[nodiscard]] std::optional<double> approach_sensitivity(const std::vector<double>& dh_m,
+                                                           double load_change_N = 0.0) const;
+
+  //! Moves `start` (save_warm_start of the last solve) to first order to the solution after every strip's
+  //! separation changed by dh_m[i] and the total load by load_change_N (the bordered system of
+  //! approach_sensitivity: dN = J^-1 (d(delta) 1 - dh)); a strip predicted non-positive keeps half its load. False,
+  //! and `start` unchanged, when no factorisation matches the last solve's active set.
+  bool shift_warm_start(const std::vector<double>& dh_m, double load_change_N, Mim1dWarmStart& start) const;
 
   [[nodiscard]] const StripGrid& grid() const noexcept { return grid_; }
   //! True when this solver was set up for the same material and options (so reset() may reuse it).
@@ -133,6 +150,7 @@ class Mim1dSolver {
   StripGrid grid_;
   double E_star_Pa_;
   Mim1dOptions options_;
+  double tolerance_;  // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
   double b_;                                                               // strip half-width [m]
   double kernel_scale_;                                                    // 2 / (pi^2 E* b) [m/N]
   std::vector<StripHertz> compliance_;                                     // local Hertz data per strip (all strips)
