@@ -260,13 +260,10 @@ void Mim1dSolver::gather_active_system(double approach_m) {
 }
 
 Mim1dSolver::SetCheck Mim1dSolver::check_active_set(const InnerState& state, double residual, double force_mismatch) {
-  const bool force_converged =
-      !state.target_load_N || std::abs(force_mismatch) <= tolerance_ * *state.target_load_N;
+  const bool force_converged = !state.target_load_N || std::abs(force_mismatch) <= tolerance_ * *state.target_load_N;
   // Newton converges quadratically: once the residual is at tolerance a step below sqrt(tol) is final.
-  const double change_tolerance =
-      options_.update == Mim1dUpdate::Newton ? std::sqrt(tolerance_) : tolerance_;
-  const bool converged_on_set =
-      state.last_change <= change_tolerance && residual <= tolerance_ && force_converged;
+  const double change_tolerance = options_.update == Mim1dUpdate::Newton ? std::sqrt(tolerance_) : tolerance_;
+  const bool converged_on_set = state.last_change <= change_tolerance && residual <= tolerance_ && force_converged;
   // Check Eq. 4 outside the set once roughly converged (so admissions do not wait for full convergence)
   // and again at convergence.
   const bool roughly_converged =
@@ -562,8 +559,7 @@ std::optional<double> Mim1dSolver::approach_sensitivity(const std::vector<double
   return change;
 }
 
-bool Mim1dSolver::shift_warm_start(const std::vector<double>& dh_m, double load_change_N,
-                                   Mim1dWarmStart& start) const {
+bool Mim1dSolver::shift_warm_start(const std::vector<double>& dh_m, double load_change_N, Mim1dWarmStart& start) const {
   const auto n = static_cast<Eigen::Index>(active_.size());
   if (options_.update != Mim1dUpdate::Newton || n == 0 || factorisation_.rows() != n || dh_m.size() != grid_.size() ||
       start.empty() || start.first_strip != first_strip_index() + static_cast<long>(active_.front()))
@@ -589,8 +585,7 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   return solve_for_load(normal_force_N, Mim1dWarmStart{});
 }
 
-NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start,
-                                           double tolerance) {
+NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start, double tolerance) {
   tolerance_ = std::max(tolerance, options_.tolerance);
   NormalSolution solution = solve_for_load(normal_force_N, warm_start);
   tolerance_ = options_.tolerance;

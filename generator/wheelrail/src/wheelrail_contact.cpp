@@ -511,10 +511,9 @@ class WheelCase {
   SolveStatus solve_main_for_load(PatchProblem& main, double depth) {
     // Start from the previous window's or reference point's solve, else from Hertz at the reference minimum.
     const bool from_hertz = !(result_.vertical_approach_m > 0.0);
-    main.gap_dz = !from_hertz
-                      ? result_.vertical_approach_m
-                      : expected_approach(side_, main.reference, dy_, roll_, E_star_, load_, value_) /
-                            std::max(std::cos(main.reference.contact_angle_rad), kCosineFloor);
+    main.gap_dz = !from_hertz ? result_.vertical_approach_m
+                              : expected_approach(side_, main.reference, dy_, roll_, E_star_, load_, value_) /
+                                    std::max(std::cos(main.reference.contact_angle_rad), kCosineFloor);
     double force = value_;
     // Fixed point x = dz(x, F) on the sampling approach x, F then rescaled to the vertical load: the next x solves
     // x = dz_pred + slope (x - x_k), dz_pred = dz_k (F_next/F_k)^(2/3) (Hertz: dz ~ F^(2/3)), slope = d dz/dx

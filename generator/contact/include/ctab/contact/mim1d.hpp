@@ -150,9 +150,9 @@ class Mim1dSolver {
   StripGrid grid_;
   double E_star_Pa_;
   Mim1dOptions options_;
-  double tolerance_;  // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
-  double b_;                                                               // strip half-width [m]
-  double kernel_scale_;                                                    // 2 / (pi^2 E* b) [m/N]
+  double tolerance_;     // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
+  double b_;             // strip half-width [m]
+  double kernel_scale_;  // 2 / (pi^2 E* b) [m/N]
   std::vector<StripHertz> compliance_;                                     // local Hertz data per strip (all strips)
   double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for
   std::vector<double> scratch_;
