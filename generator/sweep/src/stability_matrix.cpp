@@ -14,6 +14,7 @@
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/normal_contact.hpp"
+#include "ctab/contact/resolution.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/profiles/sampled_points.hpp"
 #include "ctab/profiles/smoothing_spline.hpp"
@@ -30,7 +31,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kWheelRailForce_N = 78.5e3;     // paper section 3.2, CONTACT's wheel-rail cases
 constexpr double kRailInclination = 1.0 / 40.0;  // UIC60 1:40
 constexpr double kMeasuredPointStep_m = 0.1e-3;  // point spacing of the synthetic measured profiles [m]
-constexpr double kResolutionForceShare = 0.05;   // patches below this share of the force are not resolved [-]
 const double kEStar = effective_modulus(kSteel, kSteel);
 
 //! What one solve gave, reduced to what the matrix records.
@@ -108,14 +108,7 @@ Solver strip_solver(std::shared_ptr<const GapProfile> gap, Loading loading) {
     o.finite = all_finite(s);
     o.iterations = s.iterations;
     if (o.finite) o.summary = summarise(s);
-    double extent = std::numeric_limits<double>::infinity();
-    for (const PatchSolution& p : s.patches) {
-      if (!(p.normal_force_N >= kResolutionForceShare * s.normal_load_N)) continue;
-      double length = 0.0;
-      for (const StripSolution& st : p.strips) length = std::max(length, 2.0 * st.half_length_m);
-      extent = std::min({extent, p.y_max_m - p.y_min_m, length});
-    }
-    o.min_patch_extent_m = std::isfinite(extent) ? extent : 0.0;
+    o.min_patch_extent_m = smallest_loaded_extent_m(patch_extents(s));
     return o;
   };
 }
@@ -258,14 +251,10 @@ Solver wheelrail_solver(std::shared_ptr<const WheelRail> wr, double dy_m, double
     o.finite = all_finite(c);
     o.iterations = c.iterations;
     if (o.finite) o.summary = summarise(c);
-    double extent = std::numeric_limits<double>::infinity();
-    for (const ContactPatch& p : c.patches) {
-      if (!(p.normal_force_N >= kResolutionForceShare * c.normal_force_N)) continue;
-      double length = 0.0;
-      for (const PatchStrip& st : p.strips) length = std::max(length, 2.0 * st.half_length_m);
-      extent = std::min({extent, p.s_max_m - p.s_min_m, length});
-    }
-    o.min_patch_extent_m = std::isfinite(extent) ? extent : 0.0;
+    std::vector<PatchExtent> extents;
+    for (const ContactPatch& p : c.patches)
+      extents.push_back(patch_extent(p.s_max_m - p.s_min_m, p.normal_force_N, p.strips));
+    o.min_patch_extent_m = smallest_loaded_extent_m(extents);
     return o;
   };
 }

@@ -40,6 +40,9 @@ template <class Strip>
                                          double strip_width_m) noexcept;
 //! The extents of a strip problem's patches.
 [[nodiscard]] std::vector<PatchExtent> patch_extents(const NormalSolution& solution);
+//! Smallest of width and length over the patches that carry at least kResolvedForceShare of their summed force
+//! (the stability matrix's resolution measure) [m]; 0 when no patch counts.
+[[nodiscard]] double smallest_loaded_extent_m(const std::vector<PatchExtent>& patches) noexcept;
 
 //! `status`, or UnderResolved where it is Converged, the rung discretises and fewer than kMinResolvedStrips strips
 //! lie across its smallest counted patch.
