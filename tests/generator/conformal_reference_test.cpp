@@ -47,9 +47,7 @@ TEST_P(ConformalReference, MatchesContact) {
   const Case c = GetParam();
   const Deviation e = measure(c);
   ASSERT_GT(e.patches, 0);
-  const std::string report = describe("conformal", c, e);
-  RecordProperty("deviation", report);
-  std::cout << report << '\n';
+  report("conformal", c, e);
   expect_within_limits(e, c.guard);
   if (std::string(c.loading) == "vertical_load") {
     EXPECT_LT(std::abs(e.vertical_balance), 1e-9);

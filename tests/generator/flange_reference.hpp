@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -122,6 +123,13 @@ inline std::string describe(const std::string& surface, const Case& c, const Dev
          << 100 * e.p0_rms << " %; contact_angle " << e.contact_angle_deg << " deg, rail point " << e.rail_point_mm
          << " mm";
   return report.str();
+}
+
+// Prints the deviation and records it in the test's XML output.
+inline void report(const std::string& surface, const Case& c, const Deviation& e) {
+  const std::string text = describe(surface, c, e);
+  ::testing::Test::RecordProperty("deviation", text);
+  std::cout << text << '\n';
 }
 
 inline double limit(double guard, double target) { return guard > 0.0 ? guard : target; }
