@@ -63,7 +63,8 @@ class Mim1dSolver {
 
   //! First-order change of the last solve's approach [m] when every strip's separation changes by dh_m[i] (one
   //! entry per strip of grid()) and the total load by load_change_N: the bordered system at the solution,
-  //! J dN - d(delta) 1 = -dh and 1^T dN = dF, gives d(delta) = (dF + 1^T J^-1 dh) / 1^T J^-1 1, here from the last
+  //! J dN - d(delta) v = -dh and 1^T dN = dF, gives d(delta) = (dF + 1^T J^-1 dh) / 1^T J^-1 v (v = -dR/d(delta):
+  //! 1, less the smoothed compliances' approach term in a load-prescribed solve), here from the last
   //! Jacobian factorisation of the solve (a prediction only: that of the step before convergence). Empty when it
   //! does not match the active set (fixed-point update, or no contact).
   [[nodiscard]] std::optional<double> approach_sensitivity(const std::vector<double>& dh_m,
@@ -71,7 +72,7 @@ class Mim1dSolver {
 
   //! Moves `start` (save_warm_start of the last solve) to first order to the solution after every strip's
   //! separation changed by dh_m[i] and the total load by load_change_N (the bordered system of
-  //! approach_sensitivity: dN = J^-1 (d(delta) 1 - dh)); a strip predicted non-positive keeps half its load. False,
+  //! approach_sensitivity: dN = J^-1 (d(delta) v - dh)); a strip predicted non-positive keeps half its load. False,
   //! and `start` unchanged, when no factorisation matches the last solve's active set.
   bool shift_warm_start(const std::vector<double>& dh_m, double load_change_N, Mim1dWarmStart& start) const;
 
@@ -128,6 +129,11 @@ class Mim1dSolver {
   bool take_step(InnerState& state, double next_approach);
   [[nodiscard]] NormalSolution solve_for_load_nested(double normal_force_N, int& iterations);
   void refresh_compliances(double approach_m);
+  //! approach_column_ = -d R / d(delta) on the active set, R = u - (delta - h): 1 less the change of u through the
+  //! smoothed compliances' dependence on the approach (from build_matrices' Jacobian and G at the current loads).
+  void fill_approach_column(double approach_m, double h_min);
+  //! The right-hand side of the sensitivity systems on the active set for a change dh_m of every strip's h.
+  [[nodiscard]] Eigen::VectorXd active_gap_change(const std::vector<double>& dh_m) const;
   //! Loads and active set from a warm start at approach h_min + start.depth_m; false when no strip of it applies.
   bool load_warm_start(const Mim1dWarmStart& start, double& approach_m);
   //! Strip index k of the grid's first strip (centre (k + 1/2) 2b).
@@ -153,7 +159,8 @@ class Mim1dSolver {
   double tolerance_;     // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
   double b_;             // strip half-width [m]
   double kernel_scale_;  // 2 / (pi^2 E* b) [m/N]
-  std::vector<StripHertz> compliance_;                                     // local Hertz data per strip (all strips)
+  std::vector<StripHertz> compliance_;          // local Hertz data per strip (all strips)
+  std::vector<StripHertz> shifted_compliance_;  // compliance_ at a slightly larger approach (fill_approach_column)
   double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for
   std::vector<double> scratch_;
   std::vector<double> load_;                 // N_i [N] (all strips; 0 outside the active set)
@@ -168,6 +175,7 @@ class Mim1dSolver {
   Eigen::VectorXd displacement_;             // u = G N on the active set
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
   Eigen::VectorXd rhs_, active_loads_, ones_, residual_, next_loads_, slope_;  // the active system (scratch)
+  Eigen::VectorXd approach_column_;  // -d R / d(delta) on the active set (fill_approach_column; 1 at fixed delta)
   std::vector<double> column_h_, column_q_;
 };
 
