@@ -115,9 +115,12 @@ TEST(AccuracyBench, QuickRun) {
   const fs::path dir = fs::path(::testing::TempDir()) / ("ctab_accuracy_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   std::vector<std::string> args = {"bench", "accuracy", "--quick", "--out", dir.string()};
-  if (with_reference()) {
-    args.push_back("--reference");
-    args.push_back(ctab::test::shared_path("reference/contact"));
+  if (with_reference()) {  // CONTACT's wheel-rail cases are on the Manchester files, already inclined
+    for (const std::string& arg :
+         {std::string("--reference"), ctab::test::shared_path("reference/contact"), std::string("--wheel"),
+          ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), std::string("--rail"),
+          ctab::test::shared_path("profiles/MBench_UIC60_v3.prr"), std::string("--inclination"), std::string("0")})
+      args.push_back(arg);
   }
   const ctab::test::CtabRun run = ctab::test::run_ctab(args);
   const CsvTable table = ctab::test::read_csv((dir / "accuracy.csv").string());

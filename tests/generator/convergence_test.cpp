@@ -90,6 +90,24 @@ TEST(Convergence, TwoPointContactAtTheBalancingLoadBuiltInProfiles) {
   }
 }
 
+TEST(Convergence, ConformalFlankReferenceWithTheLoadOnTheRoot) {
+  // The 8 failures of the conformal sweep (invalid-input at |dy| 6.65 mm, 48.9 and 63.3 kN vertical load, single
+  // wheel, both profile sets): the first sampling approach (0.43 mm, from the flank's 70 deg) lay far beyond the
+  // solved one and the next one was predicted at x < 0.
+  for (const bool manchester : {false, true}) {
+    std::string text =
+        config_text(manchester, "wheel", "vertical_load_N = 78.5e3", "{ start = 0.0, stop = 1e-3, step = 1e-3 }");
+    text.insert(text.find("[axes]"), "surface = \"conformal\"\n");
+    const SweepSetup setup = make_sweep_setup(parse_table_config(text, "conformal.toml"));
+    for (const double load_N : {48.9e3, 63.3e3}) {
+      const CaseSolution solved = solve_table_case(setup, 6.65e-3, load_N);
+      EXPECT_EQ(solved.wheels[0].contact.status, SolveStatus::Converged)
+          << (manchester ? "Manchester" : "built-in") << ", " << load_N << " N: " << solved.wheels[0].contact.detail;
+      EXPECT_NEAR(solved.wheels[0].contact.vertical_force_N, load_N, 1e-9 * load_N);
+    }
+  }
+}
+
 TEST(Convergence, LoadAxisExampleHasNoFailure) {
   // examples/configs/load_axis.toml exited with status 4 (wheelset, built-in profiles, dy +-5.1 mm at 100 kN).
   const auto table =

@@ -63,6 +63,8 @@ constexpr double kVerticalBalance = 1e-10;
 // strip fields 5e-8 of their largest value, over its 1e-8), 1e-7 not (1.6e-9, as at 1e-8).
 constexpr double kPredictorTolerance = 1e-7;
 constexpr int kGapPasses = 60;
+// Factor on the sampling approach when the secant step would leave x > 0 (solve_main_for_load). Chosen: halving.
+constexpr double kSamplingApproachCut = 0.5;
 constexpr int kStripSolveRetries = 4;  // failed strip solves after a successful pass, each halfway back (chosen)
 // Slope d dz / d x of the solved approach on the sampling approach: negative where the vertical shift reaches some
 // strips more than dz cos(delta_ref) (a plane on the flank over the flange root: -2 at dy 6.63 mm, where the fixed
@@ -569,11 +571,15 @@ class WheelCase {
       }
       // dz ~ F^q: Hertz q = 2/3; MIM-1D the local exponent from the strip solve (approach_sensitivity with dF).
       double exponent = 2.0 / 3.0;
-      if (next_force != force)
+      if (next_force != force && dz > 0.0)
         if (const std::optional<double> per_load = load_rate(main); per_load && *per_load > 0.0)
           exponent = *per_load * force / dz;
       const double predicted = dz * std::pow(next_force / force, exponent);
-      const double next_x = (predicted - slope * main.gap_dz) / (1.0 - slope);
+      double next_x = (predicted - slope * main.gap_dz) / (1.0 - slope);
+      // The first sampling approach can lie far beyond the solved one (dz < 0: the reference point's angle
+      // overstated the normal force, flank reference with the load on the root; conformal, dy 6.65 mm, 48.9 kN:
+      // x 0.43 mm, dz -8 um), where the prediction runs to x <= 0: halve x instead.
+      if (!(next_x > 0.0 && std::isfinite(next_x))) next_x = kSamplingApproachCut * main.gap_dz;
       shift_pass_start(main, next_x - main.gap_dz, next_force - force);
       previous_x = main.gap_dz;
       previous_dz = dz;
