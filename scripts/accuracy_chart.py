@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Chart of `ctab bench accuracy`: time per case (log x) against error (log y), one panel per scene/region,
-one marker per method and discretisation, the Pareto front (no other point both faster and more accurate) drawn.
+one marker per method and discretisation (the least model "auto": a star labelled with its tolerance), the Pareto front (no other point both faster and more accurate) drawn.
 
 Usage: /usr/bin/python3 scripts/accuracy_chart.py DIR/accuracy.csv DIR/accuracy   (writes .png and .svg)
 The error is the CSV's error_rel: the worst of the area, max-pressure and p0-profile RMS relative errors over the
@@ -14,8 +14,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARKERS = {"hertz": "o", "kp": "s", "analyn": "^", "mim1d": "D", "bem2d": "P"}
-COLOURS = {"hertz": "tab:red", "kp": "tab:orange", "analyn": "tab:green", "mim1d": "tab:blue", "bem2d": "tab:purple"}
+MARKERS = {"hertz": "o", "kp": "s", "analyn": "^", "mim1d": "D", "bem2d": "P", "auto": "*"}
+COLOURS = {"hertz": "tab:red", "kp": "tab:orange", "analyn": "tab:green", "mim1d": "tab:blue", "bem2d": "tab:purple",
+           "auto": "k"}
 ERROR_FLOOR = 1e-5  # plotted instead of a zero error (log axis)
 
 
@@ -48,8 +49,9 @@ def main(csv_path, prefix):
             points.append((t, e))
             ax.scatter(t, e, marker=MARKERS.get(r["method"], "x"), color=COLOURS.get(r["method"], "k"), s=40,
                        label=r["method"])
-            ax.annotate("%g" % (float(r["discretisation_m"]) * 1e3), (t, e), textcoords="offset points",
-                        xytext=(4, 3), fontsize=7)
+            label = ("%g" % (float(r["discretisation_m"]) * 1e3) if r["discretisation_m"]
+                     else "T %g %%" % (float(r.get("tolerance") or 0) * 100))  # the least model: its tolerance
+            ax.annotate(label, (t, e), textcoords="offset points", xytext=(4, 3), fontsize=7)
         front = pareto(points)
         ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="k", lw=1, ls="--",
                 label="Pareto front")

@@ -48,7 +48,11 @@ constexpr double kWheelRailNormalForce_N = 78.5e3;  // paper section 3.2 and CON
 struct Rung {
   ContactMethod method;
   double width_m;
+  double tolerance = 0.0;  //!< > 0: the least model (`--method auto --tolerance`), MIM-1D at widths of its choice [-]
 };
+
+//! The least model's tolerance in the wheel-rail scene (the example, README "The least model") [-].
+constexpr double kLeastModelTolerance = 0.02;
 
 std::vector<Rung> rungs(bool quick) {
   std::vector<Rung> r;
@@ -121,7 +125,8 @@ struct ContactFigures {
 //! Worst errors of one row over its cases.
 struct Row {
   std::string scene, region, method, reference;
-  double width_m = 0.0;
+  double width_m = 0.0;    //!< strip width / element size [m]; NaN for the least model (it chooses per case)
+  double tolerance = 0.0;  //!< the least model's tolerance [-]; 0 for a fixed rung
   int cases = 0, failed = 0, contact_cases = 0;
   double time_sum_s = 0.0;
   gen::AccuracyErrors worst;
@@ -151,18 +156,22 @@ struct Row {
 
 using Rows = std::map<std::string, Row>;
 
+//! The CSV's method of a rung: "auto" for the least model.
+std::string rung_name(const Rung& rung) { return rung.tolerance > 0.0 ? "auto" : gen::method_name(rung.method); }
+
 Row& row_of(Rows& rows, const std::string& scene, const std::string& region, const Rung& rung,
             const std::string& reference) {
-  char key[160];
-  std::snprintf(key, sizeof key, "%s/%s/%d/%.6e", scene.c_str(), region.c_str(), static_cast<int>(rung.method),
-                rung.width_m);
+  char key[200];
+  std::snprintf(key, sizeof key, "%s/%s/%d/%.6e/%.6e", scene.c_str(), region.c_str(), static_cast<int>(rung.method),
+                rung.width_m, rung.tolerance);
   Row& row = rows[key];
   if (row.scene.empty()) {
     row.scene = scene;
     row.region = region;
-    row.method = gen::method_name(rung.method);
+    row.method = rung_name(rung);
     row.reference = reference;
-    row.width_m = rung.width_m;
+    row.width_m = rung.tolerance > 0.0 ? std::numeric_limits<double>::quiet_NaN() : rung.width_m;
+    row.tolerance = rung.tolerance;
   }
   return row;
 }
@@ -230,13 +239,15 @@ std::string gap_reference_name(const Settings& s) {
 
 //! The sweep set-up of one rung: the default config with the bench's profiles as a single wheel at 78.5 kN normal
 //! force.
-gen::SweepSetup wheelrail_setup(const gen::TableConfig& profiles, ContactMethod method, double width_m) {
+gen::SweepSetup wheelrail_setup(const gen::TableConfig& profiles, const Rung& rung) {
   gen::TableConfig config = profiles;
   config.mode = gen::ContactMode::SingleWheel;
   config.load_kind = gen::LoadKind::NormalForce;
   config.load_values = {kWheelRailNormalForce_N};
-  config.method = method;
-  config.strip_width_m = width_m;
+  config.method = rung.method;
+  config.strip_width_m = rung.width_m;
+  config.least_model = rung.tolerance > 0.0;
+  if (config.least_model) config.tolerance = rung.tolerance;
   return gen::make_sweep_setup(config);
 }
 
@@ -293,7 +304,8 @@ std::map<long, ContactFigures> read_contact_reference(const std::optional<std::s
 
 void run_wheelrail_scene(const Settings& settings, const gen::TableConfig& profiles,
                          const std::map<long, ContactFigures>& contact, Rows& rows) {
-  const gen::SweepSetup reference_setup = wheelrail_setup(profiles, ContactMethod::Bem2d, settings.reference_width_m);
+  const gen::SweepSetup reference_setup =
+      wheelrail_setup(profiles, Rung{ContactMethod::Bem2d, settings.reference_width_m});
   std::vector<ContactSummary> reference;
   for (const double dy : settings.shifts_m) {
     const gen::WheelContact solved = solve_right_wheel(reference_setup, dy);
@@ -303,8 +315,11 @@ void run_wheelrail_scene(const Settings& settings, const gen::TableConfig& profi
     reference.push_back(gen::summarise(solved));
   }
   std::fprintf(stderr, "  wheelrail reference (%s) done\n", reference_name(settings).c_str());
-  for (const Rung& rung : rungs(settings.quick)) {
-    const gen::SweepSetup setup = wheelrail_setup(profiles, rung.method, rung.width_m);
+  std::vector<Rung> wheelrail_rungs = rungs(settings.quick);
+  // The least model, wheel-rail only (least_model.hpp); its width is the config's unused default.
+  wheelrail_rungs.push_back({ContactMethod::Mim1d, 0.2e-3, kLeastModelTolerance});
+  for (const Rung& rung : wheelrail_rungs) {
+    const gen::SweepSetup setup = wheelrail_setup(profiles, rung);
     double total_s = 0.0;
     for (std::size_t i = 0; i < settings.shifts_m.size(); ++i) {
       const double dy = settings.shifts_m[i];
@@ -318,7 +333,7 @@ void run_wheelrail_scene(const Settings& settings, const gen::TableConfig& profi
           .add(gen::summarise(result), reference[i], gen::is_success(result.status), time_s, figures);
       total_s += time_s;
     }
-    std::fprintf(stderr, "  wheelrail %s %.2f mm: %.2e s per case\n", gen::method_name(rung.method), rung.width_m * 1e3,
+    std::fprintf(stderr, "  wheelrail %s %.2f mm: %.2e s per case\n", rung_name(rung).c_str(), rung.width_m * 1e3,
                  total_s / static_cast<double>(settings.shifts_m.size()));
   }
 }
@@ -334,7 +349,7 @@ void write_csv(const std::filesystem::path& path, const Rows& rows) {
   std::ofstream out(path);
   out << "scene,region,method,discretisation_m,reference,cases,failed_cases,time_per_case_s,area_error_rel,"
          "max_pressure_error_rel,p0_profile_rms_error_rel,contact_point_error_m,error_rel,contact_cases,"
-         "vs_contact_area_error_rel,vs_contact_max_pressure_error_rel,vs_contact_point_error_m\n";
+         "vs_contact_area_error_rel,vs_contact_max_pressure_error_rel,vs_contact_point_error_m,tolerance\n";
   for (const auto& [key, r] : rows) {
     const double worst = std::max({r.worst.area_rel, r.worst.max_pressure_rel, r.worst.p0_profile_rms_rel});
     const bool has_contact = r.contact_cases > 0;
@@ -343,7 +358,8 @@ void write_csv(const std::filesystem::path& path, const Rows& rows) {
         << number(r.worst.max_pressure_rel) << ',' << number(r.worst.p0_profile_rms_rel) << ','
         << number(r.worst.contact_point_m) << ',' << number(worst) << ',' << r.contact_cases << ','
         << (has_contact ? number(r.contact_area) : "") << ',' << (has_contact ? number(r.contact_pressure) : "") << ','
-        << (has_contact ? number(r.contact_point) : "") << '\n';
+        << (has_contact ? number(r.contact_point) : "") << ',' << (r.tolerance > 0.0 ? number(r.tolerance) : "")
+        << '\n';
   }
   out.flush();
   if (!out) throw IoError(path.string() + ": cannot be written");
