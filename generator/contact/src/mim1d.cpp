@@ -348,7 +348,7 @@ bool Mim1dSolver::admit_violators(double approach_m, std::size_t& growth) {
 bool Mim1dSolver::newton_step(const InnerState& state, double force_mismatch, double& next_approach) {
   factorisation_.compute(jacobian_);
   next_loads_ = active_loads_ - factorisation_.solve(residual_);
-  if (state.target_load_N) {  // bordered system: J dN - d(delta) 1 = -R,  1^T dN = -F
+  if (state.target_load_N) {  // bordered system: J dN - d(delta) v = -R,  1^T dN = -F (v: approach_column_)
     slope_ = factorisation_.solve(approach_column_);
     const double d_approach = (-force_mismatch - (next_loads_ - active_loads_).sum()) / slope_.sum();
     next_loads_ += d_approach * slope_;

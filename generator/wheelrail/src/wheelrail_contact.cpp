@@ -63,7 +63,7 @@ constexpr double kVerticalBalance = 1e-10;
 // strip fields 5e-8 of their largest value, over its 1e-8), 1e-7 not (1.6e-9, as at 1e-8).
 constexpr double kPredictorTolerance = 1e-7;
 constexpr int kGapPasses = 60;
-// Factor on the sampling approach when the secant step would leave x > 0 (solve_main_for_load). Chosen: halving.
+// Factor on the sampling approach where the secant step predicts x <= 0 (solve_main_for_load). Chosen: halving.
 constexpr double kSamplingApproachCut = 0.5;
 constexpr int kStripSolveRetries = 4;  // failed strip solves after a successful pass, each halfway back (chosen)
 // Slope d dz / d x of the solved approach on the sampling approach: negative where the vertical shift reaches some
@@ -536,9 +536,8 @@ class WheelCase {
       solve_main_once(main, force, pass > 0, predictor ? kPredictorTolerance : options_.mim1d.tolerance);
       if (!is_success(main.solution.status)) {
         // The strip solve can cycle for one gap and load (max-iterations): after a successful pass, go halfway back
-        // towards it (x and F) and on, at most kStripSolveRetries times. Not enough where the balancing load itself
-        // makes MIM-1D cycle (conformal, built-in profiles, dy 5.5 mm, 135.6 kN: fails at 140.8-141.1 kN, converges
-        // at 141.2 kN), left to the strip solver's cycle handling.
+        // towards it (x and F) and on, at most kStripSolveRetries times. (The cycle that once failed at the balancing
+        // load itself, dy 5.5 mm, 135.6 kN, was MIM-1D's Newton step missing the compliances' approach term.)
         if (pass == 0 || main.solution.status != SolveStatus::MaxIterations) return SolveStatus::Converged;
         if (++retries > kStripSolveRetries) return SolveStatus::Converged;
         main.gap_dz = 0.5 * (main.gap_dz + previous_x);
