@@ -333,7 +333,10 @@ void run_wheelrail_scene(const Settings& settings, const gen::TableConfig& profi
           .add(gen::summarise(result), reference[i], gen::is_success(result.status), time_s, figures);
       total_s += time_s;
     }
-    std::fprintf(stderr, "  wheelrail %s %.2f mm: %.2e s per case\n", rung_name(rung).c_str(), rung.width_m * 1e3,
+    char discretisation[32];  // the least model chooses its width per case: its tolerance instead
+    if (rung.tolerance > 0.0) std::snprintf(discretisation, sizeof discretisation, "T %g %%", rung.tolerance * 100);
+    else std::snprintf(discretisation, sizeof discretisation, "%.2f mm", rung.width_m * 1e3);
+    std::fprintf(stderr, "  wheelrail %s %s: %.2e s per case\n", rung_name(rung).c_str(), discretisation,
                  total_s / static_cast<double>(settings.shifts_m.size()));
   }
 }
