@@ -88,7 +88,9 @@ struct Deviation {
   int patches = 0;
 };
 
-inline Deviation deviation(const gen::WheelContact& contact, const Reference& ref, const std::string& strip_file) {
+//! `line` and `rail`: the planar row line (p0_profile_rms); null for conformal.
+inline Deviation deviation(const gen::WheelContact& contact, const Reference& ref, const std::string& strip_file,
+                           const ContactRowLine* line = nullptr, const gen::ProfileTable* rail = nullptr) {
   Deviation e;
   e.patches = static_cast<int>(contact.patches.size());
   if (contact.patches.empty()) return e;
@@ -108,7 +110,7 @@ inline Deviation deviation(const gen::WheelContact& contact, const Reference& re
   // Direction of the total force on the rail: FY > 0 towards the field side at a negative angle.
   e.angle_deg = -std::atan2(lateral, vertical) * kDegPerRad - ref.direction_deg;
   e.lateral = (lateral - ref.lateral_N) / ref.vertical_N;
-  e.p0_rms = p0_profile_rms(contact, strip_file);
+  e.p0_rms = p0_profile_rms(contact, strip_file, line, rail);
   e.vertical_balance = vertical / kLoad_N - 1.0;
   e.contact_angle_deg = angle / force * kDegPerRad - ref.direction_deg;
   e.rail_point_mm = contact.patches.front().y_rail_m * 1e3 - ref.rail_point_mm;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,14 +35,43 @@ struct ManchesterSide {
   }
 };
 
+//! CONTACT's planar rows lie on one line in the rail's y-z plane, through the rail point at the patch's reference y
+//! and inclined at its reference angle; row i sits at s_i along it and its strip file gives y_rail_mm = ycp + s_i
+//! cos(delta) (reference README). ctab's y_rail_m of a planar strip is instead the rail point below the strip, which
+//! on a curved rail leaves that line by about s^2 sin(delta) / (2R): 0.03 mm at s = 1 mm on the 13 mm gauge corner at
+//! 69 deg, half a row of a flank patch. Planar comparisons therefore project ctab's rail points onto CONTACT's line.
+struct ContactRowLine {
+  double y_m = 0.0, z_m = 0.0, angle_rad = 0.0;  // the reference rail point and angle (rail frame, z down)
+  [[nodiscard]] double row_y_mm(double rail_y_m, const gen::ProfileTable& rail) const {
+    const double s = (rail_y_m - y_m) * std::cos(angle_rad) + (rail.z_at(rail_y_m) - z_m) * std::sin(angle_rad);
+    return (y_m + s * std::cos(angle_rad)) * 1e3;
+  }
+};
+
+//! The row line of CONTACT's single patch at dy [mm] in a planar summary CSV (columns dy_mm, ycp_rail_mm,
+//! contact_angle_rad).
+inline ContactRowLine contact_row_line(const std::string& summary_file, double dy_mm, const gen::ProfileTable& rail) {
+  const auto table = read_csv(summary_file);
+  const auto dys = table.numbers("dy_mm");
+  const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), dy_mm) - dys.begin());
+  EXPECT_EQ(std::count(dys.begin(), dys.end(), dy_mm), 1) << summary_file << ": one patch at dy " << dy_mm << " mm";
+  if (row >= dys.size()) return {};
+  const double y_m = table.numbers("ycp_rail_mm")[row] * 1e-3;
+  return {y_m, rail.z_at(y_m), table.numbers("contact_angle_rad")[row]};
+}
+
 //! p0 along the patch against a CONTACT strip file (columns y_rail_mm, p0_i_MPa): ctab's strips interpolated
 //! linearly at CONTACT's rows by rail y (0 outside ctab's patches), RMS over CONTACT's largest p0.
-inline double p0_profile_rms(const gen::WheelContact& contact, const std::string& strip_file) {
+//! With `line` and `rail` (planar), ctab's strips are placed on CONTACT's row line (ContactRowLine); without, at
+//! their y_rail_m (conformal: the surface points, as CONTACT's conformal rows).
+inline double p0_profile_rms(const gen::WheelContact& contact, const std::string& strip_file,
+                             const ContactRowLine* line = nullptr, const gen::ProfileTable* rail = nullptr) {
   const auto table = read_csv(strip_file);
   const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
   std::vector<std::pair<double, double>> ours;  // (y_rail [mm], p0 [MPa])
   for (const auto& patch : contact.patches)
-    for (const auto& s : patch.strips) ours.emplace_back(s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
+    for (const auto& s : patch.strips)
+      ours.emplace_back(line && rail ? line->row_y_mm(s.y_rail_m, *rail) : s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
   std::sort(ours.begin(), ours.end());
   double sum = 0.0;
   for (std::size_t i = 0; i < y.size(); ++i) {

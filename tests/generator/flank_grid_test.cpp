@@ -1,0 +1,133 @@
+// Why ctab's flank area differs from CONTACT's (issue 8, dy 7.5 mm, planar; README "Flange and flank"). The flank
+// patch is only 8-11 rows of 0.2 mm wide and CONTACT's area counts whole elements (ncon dx ds), which on so narrow a
+// patch lies 5-9 % above the continuum. Two independent checks:
+// - CONTACT's own rows describe a Hertzian ellipse (straight wheel flank on the rail's 13 mm arc): the row loads
+//   q_i = (pi/2) p0_i a_i fall as 1 - u^2 across the patch and so do a_ell,i^2. Parabolas fitted to them give the
+//   semi-axes and pi a b, the area of the pressure CONTACT computed, free of the element count.
+// - ctab's boundary-element reference (bem2d, the same kind of element grid) at CONTACT's 0.2 mm reproduces
+//   CONTACT's area; refined to 0.1 mm it falls towards MIM-1D, whose area does not move with the strip width.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "ctab/contact/material.hpp"
+#include "ctab/wheelrail/wheelrail_contact.hpp"
+#include "flange_reference.hpp"
+#include "manchester_side.hpp"
+
+using namespace ctab::gen;
+using namespace ctab::test::flange;
+
+namespace {
+
+struct FlankCase {
+  const char* loading;  // reference file prefix, as in flange_reference_test
+  LoadKind kind;
+};
+
+//! Least-squares parabola c0 + c1 s + c2 s^2 through (s, v); returns its peak value and -peak/c2 (the squared
+//! half-width where it reaches zero).
+struct ParabolaPeak {
+  double peak = 0.0, half_width_squared = 0.0;
+};
+ParabolaPeak fit_parabola(const std::vector<double>& s, const std::vector<double>& v) {
+  std::array<double, 5> m{};  // sums of s^0..s^4
+  std::array<double, 3> r{};  // sums of v s^0..s^2
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    double power = 1.0;
+    for (int k = 0; k < 5; ++k, power *= s[i]) {
+      m[static_cast<std::size_t>(k)] += power;
+      if (k < 3) r[static_cast<std::size_t>(k)] += v[i] * power;
+    }
+  }
+  // Normal equations [m0 m1 m2; m1 m2 m3; m2 m3 m4] c = r, by Cramer's rule.
+  const auto det = [](double a, double b, double c, double d, double e, double f, double g, double h, double k) {
+    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+  };
+  const double d = det(m[0], m[1], m[2], m[1], m[2], m[3], m[2], m[3], m[4]);
+  const double c0 = det(r[0], m[1], m[2], r[1], m[2], m[3], r[2], m[3], m[4]) / d;
+  const double c1 = det(m[0], r[0], m[2], m[1], r[1], m[3], m[2], r[2], m[4]) / d;
+  const double c2 = det(m[0], m[1], r[0], m[1], m[2], r[1], m[2], m[3], r[2]) / d;
+  const double centre = -c1 / (2.0 * c2);
+  const double peak = c0 + c1 * centre + c2 * centre * centre;
+  return {peak, -peak / c2};
+}
+
+//! pi a b of CONTACT's rows [mm^2]: b from the row loads q_i, a from a_ell,i^2.
+double contact_ellipse_area_mm2(const std::string& strip_file) {
+  const auto rows = ctab::test::read_csv(strip_file);
+  const auto s = rows.numbers("s_local_mm"), q = rows.numbers("q_i_N_per_mm"), a_ell = rows.numbers("a_ell_mm");
+  std::vector<double> a_squared;
+  for (const double a : a_ell) a_squared.push_back(a * a);
+  const double b = std::sqrt(fit_parabola(s, q).half_width_squared);
+  const double a = std::sqrt(fit_parabola(s, a_squared).peak);
+  return std::numbers::pi * a * b;
+}
+
+class FlankGrid : public ctab::test::ManchesterSuite<FlankCase> {
+ protected:
+  static WheelContact solve(NormalMethod method, double width_m, LoadKind kind) {
+    WheelRailOptions options;
+    options.reference_at_interpenetration_centre = true;  // CONTACT's rule, as flange_reference_test
+    options.method = method;
+    options.mim1d.strip_width_m = width_m;
+    const WheelContact c =
+        solve_wheel_contact(*side_, 7.5e-3, 0.0, effective_modulus(kSteel, kSteel), kind, kLoad_N, options);
+    EXPECT_TRUE(is_success(c.status)) << status_name(c.status) << " " << c.detail;
+    EXPECT_EQ(c.patches.size(), 1u);
+    return c;
+  }
+  static double area_mm2(const WheelContact& c) {
+    double area = 0.0;
+    for (const auto& p : c.patches) area += p.area_m2;
+    return area * 1e6;
+  }
+};
+
+}  // namespace
+
+// Measured: vertical load, CONTACT 72.76 mm^2 counted, 69.35 as an ellipse (+4.9 %), MIM-1D 0.2 mm 68.23 (-1.6 %);
+// normal force 37.28 counted, 34.46 as an ellipse (+8.2 %), MIM-1D 33.94 (-1.5 %).
+TEST_P(FlankGrid, MatchesTheEllipseOfContactsRows) {
+  CTAB_REQUIRE_SHARED();
+  const FlankCase c = GetParam();
+  const Reference ref = read_reference("planar", Case{c.loading, 7.5, "p7p50", {}});
+  const double ellipse = contact_ellipse_area_mm2(reference_path(std::string("strips/planar_") + c.loading + "_p7p50.csv"));
+  const double mim1d = area_mm2(solve(NormalMethod::Mim1d, 0.2e-3, c.kind));
+  std::cout << c.loading << ": CONTACT " << ref.area_mm2 << " mm^2 counted, " << ellipse << " as an ellipse; MIM-1D "
+            << mim1d << " mm^2 (" << 100 * (mim1d / ellipse - 1) << " %)\n";
+  EXPECT_GT(ref.area_mm2 / ellipse - 1.0, 0.04);            // the element count is well above the ellipse
+  EXPECT_LT(std::abs(mim1d / ellipse - 1.0), kAreaTarget);  // issue 8's area target against that ellipse
+}
+
+// Measured: CONTACT 72.76 mm^2 at 223.1 kN normal force (72.14 at ctab's 220.3 kN); bem2d 0.2 mm 71.52 (-0.9 %),
+// 0.1 mm 70.08, extrapolated 68.64; MIM-1D 0.2 mm 68.23 (-0.6 %).
+TEST_F(FlankGrid, BoundaryElementsOnContactsGridReproduceItsArea) {
+  CTAB_REQUIRE_SHARED();
+  const Reference ref = read_reference("planar", Case{"vertical_load", 7.5, "p7p50", {}});
+  // CONTACT's normal force FN = FZ / cos(angle) (planar: every row along the reference normal).
+  const double contact_force_N = ref.vertical_N / std::cos(ref.direction_deg / kDegPerRad);
+  const WheelContact coarse_solution = solve(NormalMethod::Bem2d, 0.2e-3, LoadKind::VerticalForce);
+  const double coarse = area_mm2(coarse_solution);
+  const double fine = area_mm2(solve(NormalMethod::Bem2d, 0.1e-3, LoadKind::VerticalForce));
+  const double mim1d = area_mm2(solve(NormalMethod::Mim1d, 0.2e-3, LoadKind::VerticalForce));
+  const double continuum = 2.0 * fine - coarse;  // the element-count error is first order in the element size
+  // Area grows as F^(2/3) (Hertz): CONTACT's area at ctab's normal force (the two differ through the angle).
+  const double contact_at_our_force =
+      ref.area_mm2 * std::cbrt(std::pow(coarse_solution.normal_force_N / contact_force_N, 2.0));
+  std::cout << "CONTACT " << ref.area_mm2 << " mm^2 at " << contact_force_N << " N (" << contact_at_our_force
+            << " at ctab's " << coarse_solution.normal_force_N << " N); bem2d 0.2 mm " << coarse << ", 0.1 mm " << fine
+            << ", extrapolated " << continuum << "; MIM-1D 0.2 mm " << mim1d << " mm^2\n";
+  EXPECT_LT(std::abs(coarse / contact_at_our_force - 1.0), 0.015);  // bem2d on CONTACT's grid reproduces CONTACT
+  EXPECT_GT(coarse / fine - 1.0, 0.015);                            // and falls when refined
+  EXPECT_LT(std::abs(mim1d / continuum - 1.0), 0.01);               // towards MIM-1D
+}
+
+INSTANTIATE_TEST_SUITE_P(Planar, FlankGrid,
+                         ::testing::Values(FlankCase{"vertical_load", LoadKind::VerticalForce},
+                                           FlankCase{"normal_force", LoadKind::NormalForce}),
+                         [](const ::testing::TestParamInfo<FlankCase>& p) { return std::string(p.param.loading); });
