@@ -39,8 +39,9 @@ class FlangeReference : public ctab::test::ManchesterSuite<Case> {
     const bool flank = c.dy_mm > 7.0;
     EXPECT_TRUE(contact.status == SolveStatus::Converged || (flank && contact.status == SolveStatus::UnderResolved))
         << status_name(contact.status) << " " << contact.detail;
-    const ctab::test::ContactRowLine line = ctab::test::contact_row_line(
-        reference_path(std::string("planar_") + c.loading + ".csv"), c.dy_mm, manchester_->rail);
+    const ctab::test::ContactRowLine line =
+        ctab::test::contact_row_line(reference_path(std::string("planar_") + c.loading + ".csv"), c.dy_mm,
+                                     manchester_->rail);
     return deviation(contact, ref, reference_path(std::string("strips/planar_") + c.loading + "_" + c.tag + ".csv"),
                      &line, &manchester_->rail);
   }

@@ -96,7 +96,8 @@ TEST_P(FlankGrid, MatchesTheEllipseOfContactsRows) {
   CTAB_REQUIRE_SHARED();
   const FlankCase c = GetParam();
   const Reference ref = read_reference("planar", Case{c.loading, 7.5, "p7p50", {}});
-  const double ellipse = contact_ellipse_area_mm2(reference_path(std::string("strips/planar_") + c.loading + "_p7p50.csv"));
+  const double ellipse =
+      contact_ellipse_area_mm2(reference_path(std::string("strips/planar_") + c.loading + "_p7p50.csv"));
   const double mim1d = area_mm2(solve(NormalMethod::Mim1d, 0.2e-3, c.kind));
   std::cout << c.loading << ": CONTACT " << ref.area_mm2 << " mm^2 counted, " << ellipse << " as an ellipse; MIM-1D "
             << mim1d << " mm^2 (" << 100 * (mim1d / ellipse - 1) << " %)\n";

@@ -63,8 +63,9 @@ TEST_P(WheelRailContact, MatchesContact) {
   EXPECT_NEAR(area * 1e6 / ref_area - 1.0, 0.0, 0.02);
   EXPECT_NEAR(pmax * 1e-6 / ref_pmax - 1.0, 0.0, 0.05);
   // ctab's strips placed on CONTACT's row line (manchester_side.hpp, ContactRowLine)
-  const ctab::test::ContactRowLine line = ctab::test::contact_row_line(
-      ctab::test::shared_path("reference/contact/wheelrail/summary.csv"), c.dy_mm, manchester_->rail);
+  const ctab::test::ContactRowLine line =
+      ctab::test::contact_row_line(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"), c.dy_mm,
+                                   manchester_->rail);
   const double p0_rms = ctab::test::p0_profile_rms(contact, strip_file(c.tag), &line, &manchester_->rail);
   EXPECT_LT(p0_rms, 0.05);
   if (contact.patches.size() == 1) {
@@ -77,8 +78,7 @@ TEST_P(WheelRailContact, MatchesContact) {
   std::ostringstream report;
   report << std::fixed << std::setprecision(3) << "dy " << c.dy_mm << " mm: cop " << cop * 1e3 - ref_cop
          << " mm, angle " << (angle - ref_angle) * 180 / M_PI << " deg, area " << 100 * (area * 1e6 / ref_area - 1)
-         << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %, p0 rms "
-         << 100 * p0_rms << " %";
+         << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %, p0 rms " << 100 * p0_rms << " %";
   RecordProperty("deviation", report.str());
   std::cout << report.str() << '\n';
 }
