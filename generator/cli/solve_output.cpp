@@ -98,7 +98,10 @@ bool report_failures(const gen::TableConfig& config, const gen::SweepSetup& setu
   for (std::size_t w = 0; w < solution.wheels.size(); ++w) {
     if (!solution.solved[w] || tables::is_success(gen::case_status(solution.wheels[w]))) continue;
     failed = true;
-    const std::string hint = failure_hint(setup, w, solution);
+    // The wheel's own reason (a rung's message, e.g. bem2d's grid limit); a failed roll is told by the hint.
+    const std::string& detail = solution.wheels[w].contact.detail;
+    std::string hint = failure_hint(setup, w, solution);
+    if (!detail.empty() && solution.roll.converged) hint = hint.empty() ? detail : detail + "; " + hint;
     std::fprintf(stderr, "ctab solve: %s wheel at dy = %g m, %s = %g (%s): %s%s%s\n", wheel_name(w), solution.dy_m,
                  gen::load_axis_name(config.load_kind), solution.load_value, config.source.c_str(),
                  status_text(solution.wheels[w]), hint.empty() ? "" : "; ", hint.c_str());

@@ -57,6 +57,20 @@ TEST(CliMethod, UnknownMethodIsAnInputError) {
   }
 }
 
+// A rung's own reason for a failed case reaches the user: bem2d with an element size whose grid would exceed its
+// limit says so (before: only "invalid-input", and the wheel-rail message named the rung "ANALYN").
+TEST(CliMethod, FailedCaseSaysWhy) {
+  const ctab::test::CtabRun run =
+      ctab::test::run_ctab({"solve", "--dy", "2e-3", "--normal-load", "78.5e3", "--side", "right", "--method", "bem2d",
+                            "--strip-width", "1e-5", "--json"});
+  EXPECT_EQ(run.exit_code, 4) << run.output();
+  EXPECT_NE(run.err.find("invalid-input; bem2d: grid of"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("(max 1024 per side): element size too small"), std::string::npos) << run.err;
+  const auto json = nlohmann::json::parse(run.out);
+  EXPECT_EQ(json["right"]["status"], "invalid-input");
+  EXPECT_NE(json["right"]["detail"].get<std::string>().find("element size too small"), std::string::npos);
+}
+
 // A table with each of the new rungs: the attribute names the method, every case is solved, and
 // `ctab solve --config` reproduces an entry with the same method.
 TEST(CliMethod, TableConfigMethodReachesTheTableAndSolveConfig) {

@@ -101,6 +101,7 @@ class Bem2dRun {
       }
       if (grid_status != SolveStatus::Converged) {
         solution_.status = load && grid_status == SolveStatus::NoContact ? SolveStatus::NumericalFailure : grid_status;
+        solution_.detail = why;
         return;
       }
       InfluenceConvolution influence(grid_.nx, grid_.ny, grid_.dx, grid_.dy, E_star_);

@@ -106,32 +106,52 @@ void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
   if (jacobian) jacobian_.resize(n, n);
   displacement_.setZero(n);
   const std::size_t first = active_.front(), last = active_.back();
+  // One run of neighbouring strips (the usual case): row r is strip first + r, so entry (r, c) depends on |r - c|
+  // alone and a column is two straight copies of its lag arrays.
+  const bool contiguous = last - first + 1 == active_.size();
+  double* g_lag = column_h_.data();  // G_ij by lag k = |i - j| (overwrites H_k in place)
+  double* j_lag = column_q_.data();  // J_ij by lag
   for (Eigen::Index c = 0; c < n; ++c) {
     const std::size_t j = active_[static_cast<std::size_t>(c)];
     const double beta = b_ / length_[j];
     const std::size_t reach = std::max(j - first, last - j);
-    // H_k = h((2k+1) b/a_j), Q_k = t h'(t) there; column entries are differences of neighbours.
+    // H_k = h((2k+1) b/a_j), Q_k = t h'(t) there; entries are differences of neighbours:
+    // G = scale (H_k - H_{k-1}) (2 H_0 at k = 0), and d(G_ij N_j)/dN_j = G_ij + (a_j/2) dG_ij/da_j with
+    // dh(c/a)/da = -t h'(t)/a, so J = G - scale/2 (Q_k - Q_{k-1}).
     const bool fast = StripKernel::in_table(beta) && StripKernel::in_table(static_cast<double>(2 * reach + 1) * beta);
+    double h_previous = 0.0, q_previous = 0.0;
     for (std::size_t k = 0; k <= reach; ++k) {
       const double t = static_cast<double>(2 * k + 1) * beta;
-      if (fast) kernel.value_and_scaled_slope_in_table(t, column_h_[k], column_q_[k]);
-      else kernel.value_and_scaled_slope(t, column_h_[k], column_q_[k]);
+      double h = 0.0, q = 0.0;
+      if (fast) kernel.value_and_scaled_slope_in_table(t, h, q);
+      else kernel.value_and_scaled_slope(t, h, q);
+      const double dh = k == 0 ? 2.0 * h : h - h_previous, dq = k == 0 ? 2.0 * q : q - q_previous;
+      h_previous = h;
+      q_previous = q;
+      g_lag[k] = kernel_scale_ * dh;
+      j_lag[k] = g_lag[k] - 0.5 * kernel_scale_ * dq;
     }
     const double load = with_displacement ? load_[j] : 0.0;
     double* column = influence_.col(c).data();
     double* jacobian_column = jacobian ? jacobian_.col(c).data() : nullptr;
     double* u = displacement_.data();
+    if (contiguous) {
+      const auto cc = static_cast<std::size_t>(c), rows = static_cast<std::size_t>(n);
+      for (std::size_t r = 0; r < cc; ++r) column[r] = g_lag[cc - r];
+      for (std::size_t r = cc; r < rows; ++r) column[r] = g_lag[r - cc];
+      if (jacobian) {
+        for (std::size_t r = 0; r < cc; ++r) jacobian_column[r] = j_lag[cc - r];
+        for (std::size_t r = cc; r < rows; ++r) jacobian_column[r] = j_lag[r - cc];
+      }
+      for (std::size_t r = 0; r < rows; ++r) u[r] += column[r] * load;  // u = G N, accumulated column by column
+      continue;
+    }
     for (Eigen::Index r = 0; r < n; ++r) {
       const std::size_t i = active_[static_cast<std::size_t>(r)];
       const std::size_t k = i > j ? i - j : j - i;
-      const double g = kernel_scale_ * (k == 0 ? 2.0 * column_h_[0] : column_h_[k] - column_h_[k - 1]);
-      u[r] += g * load;  // u = G N, accumulated column by column
-      column[r] = g;
-      if (jacobian) {
-        // d(G_ij N_j)/dN_j = G_ij + (a_j/2) dG_ij/da_j, with dh(c/a)/da = -t h'(t)/a.
-        const double dq = k == 0 ? 2.0 * column_q_[0] : column_q_[k] - column_q_[k - 1];
-        jacobian_column[r] = g - 0.5 * kernel_scale_ * dq;
-      }
+      column[r] = g_lag[k];
+      u[r] += g_lag[k] * load;
+      if (jacobian) jacobian_column[r] = j_lag[k];
     }
   }
 }

@@ -16,11 +16,13 @@ nlohmann::json to_json(const NormalSolution& solution) {
                        {"y_max_m", patch.y_max_m},
                        {"strips", std::move(strips)}});
   }
-  return {{"status", status_name(solution.status)}, {"method", solution.method},
-          {"approach_m", solution.approach_m},      {"normal_load_N", solution.normal_load_N},
-          {"iterations", solution.iterations},      {"outer_iterations", solution.outer_iterations},
-          {"residual", solution.residual},          {"solve_time_s", solution.solve_time_s},
-          {"patches", std::move(patches)}};
+  nlohmann::json json = {{"status", status_name(solution.status)}, {"method", solution.method},
+                         {"approach_m", solution.approach_m},      {"normal_load_N", solution.normal_load_N},
+                         {"iterations", solution.iterations},      {"outer_iterations", solution.outer_iterations},
+                         {"residual", solution.residual},          {"solve_time_s", solution.solve_time_s},
+                         {"patches", std::move(patches)}};
+  if (!solution.detail.empty()) json["detail"] = solution.detail;  // why it failed, in words
+  return json;
 }
 
 nlohmann::json to_json(const WheelContact& contact) {
@@ -53,16 +55,18 @@ nlohmann::json to_json(const WheelContact& contact) {
                       {"y_rail_m", m.rail_y_m},
                       {"gap_m", m.gap_m},
                       {"contact_angle_rad", m.contact_angle_rad}});
-  return {{"status", status_name(contact.status)},
-          {"dy_m", contact.dy_m},
-          {"roll_rad", contact.roll_rad},
-          {"approach_m", contact.vertical_approach_m},
-          {"normal_load_N", contact.normal_force_N},
-          {"vertical_load_N", contact.vertical_force_N},
-          {"iterations", contact.iterations},
-          {"solve_time_s", contact.solve_time_s},
-          {"patches", std::move(patches)},
-          {"near_misses", std::move(misses)}};
+  nlohmann::json json = {{"status", status_name(contact.status)},
+                         {"dy_m", contact.dy_m},
+                         {"roll_rad", contact.roll_rad},
+                         {"approach_m", contact.vertical_approach_m},
+                         {"normal_load_N", contact.normal_force_N},
+                         {"vertical_load_N", contact.vertical_force_N},
+                         {"iterations", contact.iterations},
+                         {"solve_time_s", contact.solve_time_s},
+                         {"patches", std::move(patches)},
+                         {"near_misses", std::move(misses)}};
+  if (!contact.detail.empty()) json["detail"] = contact.detail;  // why it failed, in words
+  return json;
 }
 
 }  // namespace ctab::gen

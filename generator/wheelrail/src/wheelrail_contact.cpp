@@ -356,17 +356,15 @@ ForceComponents run_force(const PatchProblem& p, const PatchSolution& run) {
 // Why a patch's normal solve failed, in words.
 std::string patch_failure(NormalMethod method, const NormalSolution& solution, std::size_t slot) {
   const std::string at = " at patch " + std::to_string(slot + 1);
-  const char* solver = method == NormalMethod::Mim1d   ? "MIM-1D"
-                       : method == NormalMethod::Hertz ? "Hertz"
-                       : method == NormalMethod::Kp    ? "KP"
-                                                       : "ANALYN";
+  const std::string solver = method == NormalMethod::Mim1d ? std::string("MIM-1D") : std::string(method_name(method));
+  if (!solution.detail.empty()) return solver + ": " + solution.detail + at;
   switch (solution.status) {
     case SolveStatus::MaxIterations:
-      return std::string(solver) + " did not converge in " + std::to_string(solution.iterations) + " iterations" + at;
+      return solver + " did not converge in " + std::to_string(solution.iterations) + " iterations" + at;
     case SolveStatus::InvalidInput:
-      return std::string(solver) + " rejected the strip problem" + at + " (non-finite input or curvature out of range)";
+      return solver + " rejected the strip problem" + at + " (non-finite input or curvature out of range)";
     case SolveStatus::NumericalFailure:
-      return std::string(solver) + " failed numerically" + at + " (singular system or non-finite value)";
+      return solver + " failed numerically" + at + " (singular system or non-finite value)";
     case SolveStatus::ZoneTruncated:
       return "the contact reaches the end of the window" + at + " (the profiles end inside the contact)";
     default: return std::string(status_name(solution.status)) + at;

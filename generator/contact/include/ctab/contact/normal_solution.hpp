@@ -36,6 +36,9 @@ struct NormalSolution {
   double residual = 0.0;       //!< final relative residual (displacement for delta, force for load) [-]
   double solve_time_s = 0.0;   //!< wall-clock time of the solve [s]
   std::vector<PatchSolution> patches;
+  //! Empty, or why the solve failed where the status alone does not say (e.g. bem2d: "grid of 1638 x 164 elements
+  //! (max 1024 per side): element size too small").
+  std::string detail;
 };
 
 }  // namespace ctab::gen
