@@ -73,7 +73,7 @@ class Bem2dRun {
       solution_.status = SolveStatus::InvalidInput;
       return;
     }
-    const double h_min = bem2d::deepest_separation(gap_, options_.dy_m);
+    const double h_min = bem2d::deepest_separation(gap_, options_.dy_m, options_.alignment);
     if (!std::isfinite(h_min)) {
       solution_.status = SolveStatus::InvalidInput;
       return;
@@ -93,7 +93,8 @@ class Bem2dRun {
     bem2d::CgResult cg;
     for (int rebuild = 0;; ++rebuild) {
       std::string why;
-      const SolveStatus grid_status = bem2d::make_element_grid(gap_, options_.dx_m, options_.dy_m, covered, grid_, why);
+      const SolveStatus grid_status =
+          bem2d::make_element_grid(gap_, options_.dx_m, options_.dy_m, options_.alignment, covered, grid_, why);
       if (load && grid_status == SolveStatus::NoContact && rebuild < kMaxGridRebuilds) {
         // A load so small that no element centre lies below the covered approach: cover more.
         covered = h_min + kTinyLoadCoverGrowth * (covered - h_min);

@@ -29,28 +29,34 @@ GapSample sample_gap(const GapProfile& gap, double y) {
   return s;
 }
 
-// Row indices (centre y = (j + 1/2) dy) whose centres lie inside the gap data.
-void data_rows(const GapProfile& gap, double dy, long& first, long& last) {
-  first = static_cast<long>(std::ceil(gap.y_m.front() / dy - 0.5));
-  last = static_cast<long>(std::floor(gap.y_m.back() / dy - 0.5));
+// Offset of the element centres from the integer multiples of the element size [-] (bem2d_options.hpp).
+double centre_offset(Bem2dAlignment alignment) { return alignment == Bem2dAlignment::CentresAtOrigin ? 0.0 : 0.5; }
+
+// Row indices (centre y = (j + offset) dy) whose centres lie inside the gap data.
+void data_rows(const GapProfile& gap, double dy, Bem2dAlignment alignment, long& first, long& last) {
+  first = static_cast<long>(std::ceil(gap.y_m.front() / dy - centre_offset(alignment)));
+  last = static_cast<long>(std::floor(gap.y_m.back() / dy - centre_offset(alignment)));
 }
 
-double row_centre(long j, double dy) { return (static_cast<double>(j) + 0.5) * dy; }
+double row_centre(long j, double dy, Bem2dAlignment alignment) {
+  return (static_cast<double>(j) + centre_offset(alignment)) * dy;
+}
 
 }  // namespace
 
-double deepest_separation(const GapProfile& gap, double dy) {
+double deepest_separation(const GapProfile& gap, double dy, Bem2dAlignment alignment) {
   long first = 0, last = 0;
-  data_rows(gap, dy, first, last);
+  data_rows(gap, dy, alignment, first, last);
   double deepest = std::numeric_limits<double>::infinity();
-  for (long j = first; j <= last; ++j) deepest = std::min(deepest, sample_gap(gap, row_centre(j, dy)).h);
+  for (long j = first; j <= last; ++j) deepest = std::min(deepest, sample_gap(gap, row_centre(j, dy, alignment)).h);
   return deepest;
 }
 
-SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, double covered_approach, ElementGrid& grid,
-                              std::string& why) {
+SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, Bem2dAlignment alignment,
+                              double covered_approach, ElementGrid& grid, std::string& why) {
   long first = 0, last = 0;
-  data_rows(gap, dy, first, last);
+  data_rows(gap, dy, alignment, first, last);
+  const double column_offset = centre_offset(alignment);  // nearest element centres at x = -/+ offset dx
   if (last - first + 1 > static_cast<long>(16 * kBem2dMaxElementsPerSide) || last < first) {
     why = "element width dy does not suit the gap's y-range";
     return SolveStatus::InvalidInput;
@@ -59,8 +65,8 @@ SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, doubl
   long lo = last + 1, hi = first - 1;
   double half_extent = 0.0;
   for (long j = first; j <= last; ++j) {
-    const GapSample s = sample_gap(gap, row_centre(j, dy));
-    if (s.h + s.A * 0.25 * dx * dx >= covered_approach) continue;  // the row's nearest element centres: x = -/+ dx/2
+    const GapSample s = sample_gap(gap, row_centre(j, dy, alignment));
+    if (s.h + s.A * column_offset * column_offset * dx * dx >= covered_approach) continue;
     lo = std::min(lo, j);
     hi = std::max(hi, j);
     half_extent = std::max(half_extent, std::sqrt((covered_approach - s.h) / s.A));
@@ -69,8 +75,9 @@ SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, doubl
   // One free row and column on every side.
   lo = std::max(lo - 1, first);
   hi = std::min(hi + 1, last);
+  // Columns: centres at (k + offset) dx for |centre| < (half_columns - offset + 1/2) dx, symmetric about x = 0.
   const double half_columns = std::ceil(half_extent / dx) + 1.0;
-  const double ny = static_cast<double>(hi - lo + 1), nx = 2.0 * half_columns;
+  const double ny = static_cast<double>(hi - lo + 1), nx = 2.0 * half_columns + (column_offset == 0.0 ? 1.0 : 0.0);
   if (!(nx <= static_cast<double>(kBem2dMaxElementsPerSide) && ny <= static_cast<double>(kBem2dMaxElementsPerSide))) {
     why = "grid of " + std::to_string(static_cast<long long>(nx)) + " x " + std::to_string(static_cast<long long>(ny)) +
           " elements (max " + std::to_string(kBem2dMaxElementsPerSide) + " per side): element size too small";
@@ -80,8 +87,8 @@ SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, doubl
   grid.ny = static_cast<std::size_t>(ny);
   grid.dx = dx;
   grid.dy = dy;
-  grid.x0 = -(half_columns - 0.5) * dx;
-  grid.y0 = row_centre(lo, dy);
+  grid.x0 = -(half_columns - column_offset) * dx;
+  grid.y0 = row_centre(lo, dy, alignment);
   grid.covered_approach = covered_approach;
   grid.first_row_at_data_end = lo == first;
   grid.last_row_at_data_end = hi == last;

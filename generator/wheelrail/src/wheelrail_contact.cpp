@@ -797,6 +797,7 @@ class WheelCase {
     method.method = options_.method;
     method.E_star_Pa = E_star_;
     method.strip_width_m = options_.mim1d.strip_width_m;
+    method.bem2d_alignment = options_.bem2d_alignment;
     return solve_normal_contact(p.gap, method, loading);
   }
 

@@ -2,6 +2,7 @@
 //! Options of the 2-D boundary-element reference solver (bem2d.hpp), free of Eigen so that configurations and
 //! the method interface can hold them.
 #include <cstddef>
+#include <cstdint>
 
 namespace ctab::gen {
 
@@ -12,8 +13,16 @@ inline constexpr std::size_t kBem2dMaxElementsPerSide = 1024;
 //! need 20-200 iterations up to 512 x 512 elements; 5000 leaves a wide margin and bounds a hopeless case.
 inline constexpr int kBem2dMaxIterations = 5000;
 
-//! Element grid and solver settings of bem2d. Elements are dx x dy rectangles with edges at integer multiples of
-//! dx and dy from the origin of the gap's coordinates (CONTACT's convention, so rows line up with its grid).
+//! Where the elements sit relative to the origin of the gap's coordinates. CONTACT puts element edges there for a
+//! gap of its own (the Hertz sphere and the non-Hertzian body: rows at y = (j + 1/2) dy, an even count along x),
+//! and centres its wheel-rail grid on the contact reference point (rows at s = j ds, an element at x = 0: odd
+//! counts in its strip files). On an 8-11 row flank patch the two placements count areas 3 % apart.
+enum class Bem2dAlignment : std::uint8_t {
+  EdgesAtOrigin = 0,    //!< element edges at integer multiples of dx, dy (gap files)
+  CentresAtOrigin = 1,  //!< element centres at integer multiples (wheel-rail patches: centred on the reference)
+};
+
+//! Element grid and solver settings of bem2d: dx x dy rectangles placed as `alignment` says.
 struct Bem2dGrid {
   double dx_m = 0.2e-3;  //!< element length along the rolling direction x [m]
   double dy_m = 0.2e-3;  //!< element width along the lateral direction y [m] (one "strip" per element row)
@@ -23,6 +32,7 @@ struct Bem2dGrid {
   //! 1e-8: 88, 1e-10: 119 at 0.1 mm; peak pressure changes by 1e-6 between 1e-7 and 1e-10).
   double tolerance = 1.0e-8;
   int max_iterations = kBem2dMaxIterations;  //!< constrained-CG iteration cap [-], at most kBem2dMaxIterations
+  Bem2dAlignment alignment = Bem2dAlignment::EdgesAtOrigin;
 };
 
 }  // namespace ctab::gen

@@ -3,6 +3,7 @@
 //! options name (contact_method.hpp). Eigen-free. Never throws: bad input gives SolveStatus::InvalidInput.
 #include <cstdint>
 
+#include "ctab/contact/bem2d_options.hpp"
 #include "ctab/contact/contact_method.hpp"
 #include "ctab/contact/gap_profile.hpp"
 #include "ctab/contact/mim1d_options.hpp"
@@ -25,6 +26,8 @@ struct MethodOptions {
   double E_star_Pa = 0.0;         //!< combined modulus E* [Pa] (material.hpp)
   double strip_width_m = 0.2e-3;  //!< strip width 2b of every rung's output [m] (overrides mim1d.strip_width_m)
   Mim1dOptions mim1d;             //!< MIM-1D only: update rule, curvature treatment, tolerances
+  //! bem2d only: element placement (wheel-rail patches: centred on the reference point, as CONTACT's grid).
+  Bem2dAlignment bem2d_alignment = Bem2dAlignment::EdgesAtOrigin;
 };
 
 //! Solves the gap with options.method. Output for every rung: patches of strips (y, half-length, p0, load).

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string_view>
 
+#include "ctab/contact/bem2d_options.hpp"
 #include "ctab/contact/contact_method.hpp"
 #include "ctab/contact/mim1d_options.hpp"
 
@@ -44,6 +45,10 @@ struct WheelRailOptions {
   //! Contact surface (config [solver] surface, CLI --surface): planar (the default) or conformal (CONTACT's
   //! conformal approach, D = 4; README "Flange and flank").
   ContactSurface surface = ContactSurface::Planar;
+  //! bem2d's element placement in the patch frame (bem2d_options.hpp). CentresAtOrigin is CONTACT's wheel-rail grid
+  //! (rows at s = k ds from the reference point, an element at x = 0): comparisons with CONTACT use it
+  //! (`ctab bench accuracy`, bem2d_wheelrail_test); tables keep the edges at the origin.
+  Bem2dAlignment bem2d_alignment = Bem2dAlignment::EdgesAtOrigin;
 };
 
 //! Names of the contact surfaces (config [solver] surface, CLI --surface).
