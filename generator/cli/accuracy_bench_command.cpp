@@ -238,8 +238,7 @@ std::string gap_reference_name(const Settings& s) {
 }
 
 //! The sweep set-up of one rung: the default config with the bench's profiles as a single wheel at 78.5 kN normal
-//! force; bem2d on CONTACT's wheel-rail grid (centred on the reference point), so that bem2d at 0.2 mm and CONTACT
-//! count areas on the same element placement.
+//! force.
 gen::SweepSetup wheelrail_setup(const gen::TableConfig& profiles, const Rung& rung) {
   gen::TableConfig config = profiles;
   config.mode = gen::ContactMode::SingleWheel;
@@ -249,9 +248,7 @@ gen::SweepSetup wheelrail_setup(const gen::TableConfig& profiles, const Rung& ru
   config.strip_width_m = rung.width_m;
   config.least_model = rung.tolerance > 0.0;
   if (config.least_model) config.tolerance = rung.tolerance;
-  gen::SweepSetup setup = gen::make_sweep_setup(config);
-  setup.options.bem2d_alignment = gen::Bem2dAlignment::CentresAtOrigin;
-  return setup;
+  return gen::make_sweep_setup(config);
 }
 
 gen::WheelContact solve_right_wheel(const gen::SweepSetup& setup, double dy_m) {

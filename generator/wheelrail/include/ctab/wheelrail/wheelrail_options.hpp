@@ -46,8 +46,9 @@ struct WheelRailOptions {
   //! conformal approach, D = 4; README "Flange and flank").
   ContactSurface surface = ContactSurface::Planar;
   //! bem2d's element placement in the patch frame (bem2d_options.hpp). CentresAtOrigin is CONTACT's wheel-rail grid
-  //! (rows at s = k ds from the reference point, an element at x = 0): comparisons with CONTACT use it
-  //! (`ctab bench accuracy`, bem2d_wheelrail_test); tables keep the edges at the origin.
+  //! (rows at s = k ds from the reference point, an element at x = 0); with CONTACT's reference point it is the
+  //! like-for-like comparison with CONTACT (bem2d_wheelrail_test). Tables and `ctab bench accuracy` (at ctab's
+  //! default deepest point) keep the edges at the origin.
   Bem2dAlignment bem2d_alignment = Bem2dAlignment::EdgesAtOrigin;
 };
 
