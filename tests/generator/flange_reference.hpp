@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "manchester_side.hpp"
@@ -79,9 +81,49 @@ inline Reference read_reference(const std::string& surface, const Case& c) {
   return r;
 }
 
+//! Least-squares parabola c0 + c1 s + c2 s^2 through (s, v); returns its peak value and -peak/c2 (the squared
+//! half-width where it reaches zero).
+struct ParabolaPeak {
+  double peak = 0.0, half_width_squared = 0.0;
+};
+inline ParabolaPeak fit_parabola(const std::vector<double>& s, const std::vector<double>& v) {
+  std::array<double, 5> m{};  // sums of s^0..s^4
+  std::array<double, 3> r{};  // sums of v s^0..s^2
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    double power = 1.0;
+    for (int k = 0; k < 5; ++k, power *= s[i]) {
+      m[static_cast<std::size_t>(k)] += power;
+      if (k < 3) r[static_cast<std::size_t>(k)] += v[i] * power;
+    }
+  }
+  // Normal equations [m0 m1 m2; m1 m2 m3; m2 m3 m4] c = r, by Cramer's rule.
+  const auto det = [](double a, double b, double c, double d, double e, double f, double g, double h, double k) {
+    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+  };
+  const double d = det(m[0], m[1], m[2], m[1], m[2], m[3], m[2], m[3], m[4]);
+  const double c0 = det(r[0], m[1], m[2], r[1], m[2], m[3], r[2], m[3], m[4]) / d;
+  const double c1 = det(m[0], r[0], m[2], m[1], r[1], m[3], m[2], r[2], m[4]) / d;
+  const double c2 = det(m[0], m[1], r[0], m[1], m[2], r[1], m[2], m[3], r[2]) / d;
+  const double centre = -c1 / (2.0 * c2);
+  const double peak = c0 + c1 * centre + c2 * centre * centre;
+  return {peak, -peak / c2};
+}
+
+//! pi a b of CONTACT's rows [mm^2]: b from the row loads q_i, a from a_ell,i^2.
+inline double contact_ellipse_area_mm2(const std::string& strip_file) {
+  const auto rows = ctab::test::read_csv(strip_file);
+  const auto s = rows.numbers("s_local_mm"), q = rows.numbers("q_i_N_per_mm"), a_ell = rows.numbers("a_ell_mm");
+  std::vector<double> a_squared;
+  for (const double a : a_ell) a_squared.push_back(a * a);
+  const double b = std::sqrt(fit_parabola(s, q).half_width_squared);
+  const double a = std::sqrt(fit_parabola(s, a_squared).peak);
+  return std::numbers::pi * a * b;
+}
+
 // ctab's deviation from CONTACT over all patches of the wheel.
 struct Deviation {
   double area = 0, pmax = 0, cop_mm = 0, angle_deg = 0, lateral = 0, p0_rms = 0;
+  double area_ellipse = 0;       // area against the ellipse of CONTACT's rows (contact_ellipse_area_mm2)
   double vertical_balance = 0;   // sum force_vertical_N / prescribed - 1
   double contact_angle_deg = 0;  // ctab's load-weighted contact_angle_rad - CONTACT's direction
   double rail_point_mm = 0;      // ctab's reference point on the rail (main patch) - CONTACT's
@@ -105,6 +147,7 @@ inline Deviation deviation(const gen::WheelContact& contact, const Reference& re
     angle += p.normal_force_N * p.contact_angle_rad;
   }
   e.area = area * 1e6 / ref.area_mm2 - 1.0;
+  e.area_ellipse = area * 1e6 / contact_ellipse_area_mm2(strip_file) - 1.0;
   e.pmax = pmax * 1e-6 / ref.pmax_MPa - 1.0;
   e.cop_mm = cop / force * 1e3 - ref.y_cop_rail_mm;
   // Direction of the total force on the rail: FY > 0 towards the field side at a negative angle.
@@ -120,10 +163,10 @@ inline Deviation deviation(const gen::WheelContact& contact, const Reference& re
 inline std::string describe(const std::string& surface, const Case& c, const Deviation& e) {
   std::ostringstream report;
   report << std::fixed << std::setprecision(3) << surface << " " << c.loading << " dy " << c.dy_mm << " mm ("
-         << e.patches << " patch): area " << 100 * e.area << " %, pmax " << 100 * e.pmax << " %, cop " << e.cop_mm
-         << " mm, direction " << e.angle_deg << " deg, lateral " << 100 * e.lateral << " % of FZ, p0 rms "
-         << 100 * e.p0_rms << " %; contact_angle " << e.contact_angle_deg << " deg, rail point " << e.rail_point_mm
-         << " mm";
+         << e.patches << " patch): area " << 100 * e.area << " % (ellipse of the rows " << 100 * e.area_ellipse
+         << " %), pmax " << 100 * e.pmax << " %, cop " << e.cop_mm << " mm, direction " << e.angle_deg
+         << " deg, lateral " << 100 * e.lateral << " % of FZ, p0 rms " << 100 * e.p0_rms << " %; contact_angle "
+         << e.contact_angle_deg << " deg, rail point " << e.rail_point_mm << " mm";
   return report.str();
 }
 
@@ -136,9 +179,11 @@ inline void report(const std::string& surface, const Case& c, const Deviation& e
 
 inline double limit(double guard, double target) { return guard > 0.0 ? guard : target; }
 
-// Each quantity within its target, or within the case's guard where the target is not met.
-inline void expect_within_limits(const Deviation& e, const Limits& guard) {
-  EXPECT_LT(std::abs(e.area), limit(guard.area, kAreaTarget));
+// Each quantity within its target, or within the case's guard where the target is not met. The flank patch
+// (`hertzian_patch`: the straight wheel flank on the rail's 13 mm arc, 8-11 rows of 0.2 mm) is compared in area with
+// the ellipse of CONTACT's rows, not with its element count, which lies 5-8 % above it there (flank_grid_test).
+inline void expect_within_limits(const Deviation& e, const Limits& guard, bool hertzian_patch) {
+  EXPECT_LT(std::abs(hertzian_patch ? e.area_ellipse : e.area), limit(guard.area, kAreaTarget));
   EXPECT_LT(std::abs(e.pmax), limit(guard.pmax, kPmaxTarget));
   EXPECT_LT(std::abs(e.cop_mm), limit(guard.cop_mm, kCopTarget_mm));
   EXPECT_LT(std::abs(e.angle_deg), limit(guard.angle_deg, kAngleTarget_deg));

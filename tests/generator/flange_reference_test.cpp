@@ -55,7 +55,7 @@ TEST_P(FlangeReference, PlanarMatchesContact) {
   const Deviation e = measure(c);
   ASSERT_GT(e.patches, 0);
   report("planar", c, e);
-  expect_within_limits(e, c.guard);
+  expect_within_limits(e, c.guard, c.dy_mm > 7.0);
 }
 
 // The reference point is the centre of the interpenetration region (wheelrail_contact.cpp, recentre_main_patch):
@@ -122,8 +122,8 @@ TEST_F(FlangeReference, ReferencePointMatchesContact) {
 INSTANTIATE_TEST_SUITE_P(Planar, FlangeReference,
                          ::testing::Values(Case{"vertical_load", 5.5, "p5p50", {0, 0, 0, 1.6, 0.030, 0}},
                                            Case{"vertical_load", 6.5, "p6p50", {0, 0, 0, 0.40, 0, 0}},
-                                           Case{"vertical_load", 7.5, "p7p50", {0.065, 0, 0, 0, 0.040, 0}},
+                                           Case{"vertical_load", 7.5, "p7p50", {0, 0, 0, 0, 0.040, 0}},
                                            Case{"normal_force", 5.5, "p5p50", {0, 0, 0, 1.45, 0.025, 0}},
                                            Case{"normal_force", 6.5, "p6p50", {0, 0, 0, 0.35, 0, 0.06}},
-                                           Case{"normal_force", 7.5, "p7p50", {0.095, 0, 0, 0, 0, 0.18}}),
+                                           Case{"normal_force", 7.5, "p7p50", {0, 0, 0, 0, 0, 0.18}}),
                          case_name);

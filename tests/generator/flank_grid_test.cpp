@@ -29,45 +29,6 @@ struct FlankCase {
   LoadKind kind;
 };
 
-//! Least-squares parabola c0 + c1 s + c2 s^2 through (s, v); returns its peak value and -peak/c2 (the squared
-//! half-width where it reaches zero).
-struct ParabolaPeak {
-  double peak = 0.0, half_width_squared = 0.0;
-};
-ParabolaPeak fit_parabola(const std::vector<double>& s, const std::vector<double>& v) {
-  std::array<double, 5> m{};  // sums of s^0..s^4
-  std::array<double, 3> r{};  // sums of v s^0..s^2
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    double power = 1.0;
-    for (int k = 0; k < 5; ++k, power *= s[i]) {
-      m[static_cast<std::size_t>(k)] += power;
-      if (k < 3) r[static_cast<std::size_t>(k)] += v[i] * power;
-    }
-  }
-  // Normal equations [m0 m1 m2; m1 m2 m3; m2 m3 m4] c = r, by Cramer's rule.
-  const auto det = [](double a, double b, double c, double d, double e, double f, double g, double h, double k) {
-    return a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
-  };
-  const double d = det(m[0], m[1], m[2], m[1], m[2], m[3], m[2], m[3], m[4]);
-  const double c0 = det(r[0], m[1], m[2], r[1], m[2], m[3], r[2], m[3], m[4]) / d;
-  const double c1 = det(m[0], r[0], m[2], m[1], r[1], m[3], m[2], r[2], m[4]) / d;
-  const double c2 = det(m[0], m[1], r[0], m[1], m[2], r[1], m[2], m[3], r[2]) / d;
-  const double centre = -c1 / (2.0 * c2);
-  const double peak = c0 + c1 * centre + c2 * centre * centre;
-  return {peak, -peak / c2};
-}
-
-//! pi a b of CONTACT's rows [mm^2]: b from the row loads q_i, a from a_ell,i^2.
-double contact_ellipse_area_mm2(const std::string& strip_file) {
-  const auto rows = ctab::test::read_csv(strip_file);
-  const auto s = rows.numbers("s_local_mm"), q = rows.numbers("q_i_N_per_mm"), a_ell = rows.numbers("a_ell_mm");
-  std::vector<double> a_squared;
-  for (const double a : a_ell) a_squared.push_back(a * a);
-  const double b = std::sqrt(fit_parabola(s, q).half_width_squared);
-  const double a = std::sqrt(fit_parabola(s, a_squared).peak);
-  return std::numbers::pi * a * b;
-}
-
 class FlankGrid : public ctab::test::ManchesterSuite<FlankCase> {
  protected:
   static WheelContact solve(NormalMethod method, double width_m, LoadKind kind) {

@@ -248,8 +248,9 @@ class PatchBuilder {
     line.z += mid * line.c;
     state.n_rail -= mid;
     state.n_wheel -= mid;
-    const double rail_angle = std::atan(side_.rail().at(line.y - state.n_rail * line.sn).dz);
-    const double angle = 0.5 * (rail_angle + std::atan(w.slope));
+    double s_guess = state.s_guess;
+    const double rail_angle = std::atan(side_.rail().at(line.y).dz);
+    const double angle = 0.5 * (rail_angle + std::atan(wheel_at(line.y, s_guess, dz).slope));
     line.c = std::cos(angle);
     line.sn = std::sin(angle);
     return true;
