@@ -8,11 +8,9 @@
 //   CONTACT's area; refined to 0.1 mm it falls towards MIM-1D, whose area does not move with the strip width.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <iostream>
 #include <string>
-#include <vector>
 
 #include "ctab/contact/material.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
@@ -24,12 +22,7 @@ using namespace ctab::test::flange;
 
 namespace {
 
-struct FlankCase {
-  const char* loading;  // reference file prefix, as in flange_reference_test
-  LoadKind kind;
-};
-
-class FlankGrid : public ctab::test::ManchesterSuite<FlankCase> {
+class FlankGrid : public ctab::test::ManchesterSuite<const char*> {
  protected:
   static WheelContact solve(NormalMethod method, double width_m, LoadKind kind) {
     WheelRailOptions options;
@@ -52,19 +45,16 @@ class FlankGrid : public ctab::test::ManchesterSuite<FlankCase> {
 
 }  // namespace
 
-// Measured: vertical load, CONTACT 72.76 mm^2 counted, 69.35 as an ellipse (+4.9 %), MIM-1D 0.2 mm 68.23 (-1.6 %);
-// normal force 37.28 counted, 34.46 as an ellipse (+8.2 %), MIM-1D 33.94 (-1.5 %).
-TEST_P(FlankGrid, MatchesTheEllipseOfContactsRows) {
+// Measured: vertical load 72.76 mm^2 counted, 69.35 as an ellipse (+4.9 %); normal force 37.28 and 34.46 (+8.2 %).
+// MIM-1D against that ellipse (-1.6 / -1.5 %) is checked in flange_reference_test with issue 8's area target.
+TEST_P(FlankGrid, ElementCountLiesAboveTheEllipse) {
   CTAB_REQUIRE_SHARED();
-  const FlankCase c = GetParam();
-  const Reference ref = read_reference("planar", Case{c.loading, 7.5, "p7p50", {}});
+  const char* loading = GetParam();  // reference file prefix, as in flange_reference_test
+  const Reference ref = read_reference("planar", Case{loading, 7.5, "p7p50", {}});
   const double ellipse =
-      contact_ellipse_area_mm2(reference_path(std::string("strips/planar_") + c.loading + "_p7p50.csv"));
-  const double mim1d = area_mm2(solve(NormalMethod::Mim1d, 0.2e-3, c.kind));
-  std::cout << c.loading << ": CONTACT " << ref.area_mm2 << " mm^2 counted, " << ellipse << " as an ellipse; MIM-1D "
-            << mim1d << " mm^2 (" << 100 * (mim1d / ellipse - 1) << " %)\n";
-  EXPECT_GT(ref.area_mm2 / ellipse - 1.0, 0.04);            // the element count is well above the ellipse
-  EXPECT_LT(std::abs(mim1d / ellipse - 1.0), kAreaTarget);  // issue 8's area target against that ellipse
+      contact_ellipse_area_mm2(reference_path(std::string("strips/planar_") + loading + "_p7p50.csv"));
+  std::cout << loading << ": CONTACT " << ref.area_mm2 << " mm^2 counted, " << ellipse << " as an ellipse\n";
+  EXPECT_GT(ref.area_mm2 / ellipse - 1.0, 0.04);
 }
 
 // Measured (bem2d on CONTACT's wheel-rail grid): CONTACT 72.76 mm^2 at 223.1 kN normal force (72.14 at ctab's
@@ -90,7 +80,5 @@ TEST_F(FlankGrid, BoundaryElementsOnContactsGridReproduceItsArea) {
   EXPECT_LT(std::abs(mim1d / continuum - 1.0), 0.01);               // towards MIM-1D
 }
 
-INSTANTIATE_TEST_SUITE_P(Planar, FlankGrid,
-                         ::testing::Values(FlankCase{"vertical_load", LoadKind::VerticalForce},
-                                           FlankCase{"normal_force", LoadKind::NormalForce}),
-                         [](const ::testing::TestParamInfo<FlankCase>& p) { return std::string(p.param.loading); });
+INSTANTIATE_TEST_SUITE_P(Planar, FlankGrid, ::testing::Values("vertical_load", "normal_force"),
+                         [](const ::testing::TestParamInfo<const char*>& p) { return std::string(p.param); });

@@ -240,10 +240,9 @@ class PatchBuilder {
   }
 
   // One corrector pass: intersects `line` with both profiles, moves its point to the midpoint and turns it to the
-  // mean inclination of the rail and the wheel at the point's own lateral position y (keeps n_rail, n_wheel relative
-  // to the moved point). CONTACT's rule, read off its conformal rows (flank, dy 7.5 mm: -69.563 deg at y -42.2747 mm
-  // = the mean of the rail's -69.126 deg at that y and the wheel flank's -70.0); taken where the normal meets each
-  // profile instead, the rail's 13 mm arc is read 0.09 mm further along and the flank pushed 0.62 deg too steeply.
+  // mean inclination of the rail and wheel there (keeps n_rail, n_wheel relative to the moved point). CONTACT reads
+  // both inclinations at the surface point's own y instead (README "Which inclinations make the normal"); not
+  // adopted yet: it fixes the flank's direction but moves one p0 edge row past its target.
   bool midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
     if (!intersect(line, dz, state, w)) return false;
     const double mid = 0.5 * (state.n_rail + state.n_wheel);
@@ -251,9 +250,8 @@ class PatchBuilder {
     line.z += mid * line.c;
     state.n_rail -= mid;
     state.n_wheel -= mid;
-    double s_guess = state.s_guess;  // a copy: the wheel point at y, not the one the intersection tracks
-    const double rail_angle = std::atan(side_.rail().at(line.y).dz);
-    const double angle = 0.5 * (rail_angle + std::atan(wheel_at(line.y, s_guess, dz).slope));
+    const double rail_angle = std::atan(side_.rail().at(line.y - state.n_rail * line.sn).dz);
+    const double angle = 0.5 * (rail_angle + std::atan(w.slope));
     line.c = std::cos(angle);
     line.sn = std::sin(angle);
     return true;
