@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -87,23 +88,27 @@ TEST(UnderResolved, LadderReportsItOnASmallHertzPatch) {
 }
 
 TEST(LeastModel, EstimatorPieces) {
-  // start: the coarsest width with >= 8 strips across W, never the first look's 0.8 mm
+  // start: the coarsest width with >= 8 strips across W, never the 0.8 mm that only checks 0.4 mm
   EXPECT_EQ(auto_start_rung(20e-3), 1u);    // 0.4 mm: 50 strips
   EXPECT_EQ(auto_start_rung(3.1e-3), 2u);   // 0.2 mm: 15 strips (0.4 mm: 7.75)
   EXPECT_EQ(auto_start_rung(1.6e-3), 2u);   // 0.2 mm: 8 strips
   EXPECT_EQ(auto_start_rung(1.0e-3), 3u);   // 0.1 mm: 10 strips
   EXPECT_EQ(auto_start_rung(0.01e-3), 4u);  // the finest
-  WheelContact fine, coarse;
+  WheelContact fine;
   fine.patches.resize(1);
-  coarse.patches.resize(1);
   fine.patches[0].area_m2 = 100e-6, fine.patches[0].max_pressure_Pa = 1.0e9;
-  coarse.patches[0].area_m2 = 101e-6, coarse.patches[0].max_pressure_Pa = 0.97e9;
+  StripWidthTotals coarse;
+  coarse.area_m2 = 101e-6, coarse.max_pressure_Pa = 0.97e9, coarse.solved = true;
   EXPECT_NEAR(richardson_error(fine, coarse), 0.03, 1e-12);  // the larger of 1 % (area) and 3 % (pressure)
-  EXPECT_TRUE(std::isinf(richardson_error(fine, WheelContact{})));
+  EXPECT_TRUE(std::isinf(richardson_error(fine, StripWidthTotals{})));
+  coarse.solved = false;
+  EXPECT_TRUE(std::isinf(richardson_error(fine, coarse))) << "a failed check is no estimate";
 }
 
 // Every case of a small sweep (tread, two-point, flange root, flank) within T of MIM-1D at 0.05 mm, with fewer
-// influence-matrix entries (strips squared per patch, every solve of the least model counted) than MIM-1D at 0.2 mm.
+// influence-matrix entries built (n^2 per MIM-1D iteration, every solve and check of the least model counted) than
+// MIM-1D at 0.2 mm: the "faster than always using MIM-1D at 0.2 mm" as a count (0.87x on these 8 cases, 3
+// of them two-point or flange; the 141-case sweep's wall time is in the README).
 TEST(LeastModel, MeetsTheToleranceWithFewerStripsThanMim1dAtTwoTenths) {
   const SweepSetup auto_setup = make_sweep_setup(sweep_config("method = \"auto\"\ntolerance = 0.02"));
   const SweepSetup plain = make_sweep_setup(sweep_config("strip_width_m = 0.2e-3"));
@@ -125,12 +130,16 @@ TEST(LeastModel, MeetsTheToleranceWithFewerStripsThanMim1dAtTwoTenths) {
     EXPECT_TRUE(std::find(kAutoStripWidths_m.begin(), kAutoStripWidths_m.end(), a.choice.strip_width_m) !=
                 kAutoStripWidths_m.end())
         << at;
-    EXPECT_GE(a.choice.solves, 2) << at << ": a first look and a checked solve";
-    auto_entries += a.choice.influence_entries;
-    plain_entries += strips_in(p.contact, 0.2e-3, true);
+    EXPECT_GE(a.choice.solves, 1) << at;
+    EXPECT_TRUE(std::isfinite(a.choice.estimated_error) || a.choice.strip_width_m == kAutoStripWidths_m.back())
+        << at << ": every answer above the finest width was checked";
+    auto_entries += a.choice.matrix_entries;
+    plain_entries += p.contact.matrix_entries;
     coarser += a.choice.strip_width_m > 0.2e-3 ? 1 : 0;
   }
-  EXPECT_LT(auto_entries, 0.7 * plain_entries) << "influence-matrix entries, summed over every solve";
+  std::printf("[ least model ] influence-matrix entries built: auto %.0f, mim1d 0.2 mm %.0f (%.2fx)\n", auto_entries,
+              plain_entries, auto_entries / plain_entries);
+  EXPECT_LT(auto_entries, plain_entries) << "influence-matrix entries built, summed over every solve";
   EXPECT_GE(coarser, 4) << "the tread cases take 0.4 mm";
 }
 

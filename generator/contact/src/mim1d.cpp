@@ -102,6 +102,7 @@ void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
   const StripKernel& kernel = StripKernel::instance();
   const auto n = static_cast<Eigen::Index>(active_.size());
   const bool jacobian = kind == MatrixKind::Jacobian;
+  matrix_entries_ += static_cast<double>(n) * static_cast<double>(n);
   influence_.resize(n, n);
   if (jacobian) jacobian_.resize(n, n);
   displacement_.setZero(n);
@@ -531,6 +532,7 @@ NormalSolution Mim1dSolver::make_solution(SolveStatus status, double approach_m)
 
 NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
   const auto start = std::chrono::steady_clock::now();
+  const double entries_before = matrix_entries_;
   if (!std::isfinite(approach_m)) {
     NormalSolution invalid = make_solution(SolveStatus::InvalidInput, approach_m);
     invalid.patches.clear();
@@ -544,6 +546,7 @@ NormalSolution Mim1dSolver::solve_for_approach(double approach_m) {
   solution.iterations = inner.iterations;
   solution.residual = inner.residual;
   solution.solve_time_s = seconds_since(start);
+  solution.matrix_entries = matrix_entries_ - entries_before;
   return solution;
 }
 
@@ -651,6 +654,7 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWar
 
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start) {
   const auto start = std::chrono::steady_clock::now();
+  const double entries_before = matrix_entries_;
   int iterations = 0;
   NormalSolution solution;
   if (std::isfinite(normal_force_N) && normal_force_N > 0.0) {
@@ -677,6 +681,7 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWar
   if (solution.status != SolveStatus::Converged && solution.status != SolveStatus::ZoneTruncated)
     solution = solve_for_load_nested(normal_force_N, iterations);
   solution.solve_time_s = seconds_since(start);
+  solution.matrix_entries = matrix_entries_ - entries_before;
   return solution;
 }
 

@@ -36,12 +36,9 @@ Totals totals(const WheelContact& contact) {
 
 }  // namespace
 
-double strips_in(const WheelContact& contact, double strip_width_m, bool squared) noexcept {
+double strips_in(const WheelContact& contact, double strip_width_m) noexcept {
   double strips = 0.0;
-  for (const ContactPatch& p : contact.patches) {
-    const double n = std::round((p.s_max_m - p.s_min_m) / strip_width_m);
-    strips += squared ? n * n : n;
-  }
+  for (const ContactPatch& p : contact.patches) strips += std::round((p.s_max_m - p.s_min_m) / strip_width_m);
   return strips;
 }
 
@@ -51,9 +48,10 @@ std::size_t auto_start_rung(double patch_width_m) noexcept {
   return kAutoStripWidths_m.size() - 1;
 }
 
-double richardson_error(const WheelContact& fine, const WheelContact& coarse) noexcept {
-  const Totals f = totals(fine), c = totals(coarse);
-  if (!(f.area_m2 > 0.0 && f.max_pressure_Pa > 0.0 && c.area_m2 > 0.0)) return kInfinity;
+double richardson_error(const WheelContact& fine, const StripWidthTotals& coarse) noexcept {
+  const Totals f = totals(fine);
+  const Totals c{coarse.area_m2, coarse.max_pressure_Pa};
+  if (!coarse.solved || !(f.area_m2 > 0.0 && f.max_pressure_Pa > 0.0 && c.area_m2 > 0.0)) return kInfinity;
   return std::max(std::abs(f.area_m2 - c.area_m2) / f.area_m2,
                   std::abs(f.max_pressure_Pa - c.max_pressure_Pa) / f.max_pressure_Pa);
 }
@@ -69,30 +67,36 @@ WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, dou
     WheelContact solved = solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, at, workspace);
     ++chosen.solves;
     chosen.strips_solved += strips_in(solved, width_m);
-    chosen.influence_entries += strips_in(solved, width_m, true);
+    chosen.matrix_entries += solved.matrix_entries;
     chosen.strip_width_m = width_m;
     return solved;
   };
-  WheelContact coarse = solve_at(kAutoStripWidths_m.front());
-  const bool usable = is_success(coarse.status) && coarse.status != SolveStatus::NoContact && !coarse.patches.empty();
-  if (coarse.status != SolveStatus::NoContact && !usable) coarse = solve_at(kAutoFallbackWidth_m);
-  if (!usable) {
+  const auto done = [&](WheelContact&& contact) {
     if (choice != nullptr) *choice = chosen;
-    return coarse;
+    return std::move(contact);
+  };
+  std::size_t rung = kAutoFirstRung;
+  WheelContact fine = solve_at(kAutoStripWidths_m[rung]);
+  const bool usable = is_success(fine.status) && fine.status != SolveStatus::NoContact && !fine.patches.empty();
+  if (fine.status != SolveStatus::NoContact && !usable) fine = solve_at(kAutoFallbackWidth_m);
+  if (!usable) return done(std::move(fine));
+  chosen.patch_width_m = smallest_patch_width(fine);
+  if (const std::size_t start = auto_start_rung(chosen.patch_width_m); start > rung) {
+    rung = start;
+    fine = solve_at(kAutoStripWidths_m[rung]);
   }
-  chosen.patch_width_m = smallest_patch_width(coarse);
-  std::size_t rung = auto_start_rung(chosen.patch_width_m);
-  if (rung > 1) coarse = solve_at(kAutoStripWidths_m[rung - 1]);
   for (;; ++rung) {
-    WheelContact fine = solve_at(kAutoStripWidths_m[rung]);
-    chosen.estimated_error = richardson_error(fine, coarse);
+    Mim1dOptions coarse = at.mim1d;
+    coarse.strip_width_m = 2.0 * kAutoStripWidths_m[rung];
+    const StripWidthTotals check = resolve_at_strip_width(workspace, E_star_Pa, coarse);
+    chosen.strips_solved += check.strips;
+    chosen.matrix_entries += check.matrix_entries;
+    chosen.estimated_error = richardson_error(fine, check);
     const bool last = rung + 1 == kAutoStripWidths_m.size();
     const bool resolved = fine.status != SolveStatus::UnderResolved;
-    if (last || !is_success(fine.status) || (resolved && kAutoSafetyFactor * chosen.estimated_error <= tolerance)) {
-      if (choice != nullptr) *choice = chosen;
-      return fine;
-    }
-    coarse = std::move(fine);
+    if (last || !is_success(fine.status) || (resolved && kAutoSafetyFactor * chosen.estimated_error <= tolerance))
+      return done(std::move(fine));
+    fine = solve_at(kAutoStripWidths_m[rung + 1]);
   }
 }
 

@@ -101,14 +101,15 @@ struct PatchProblem {
 };
 
 // Creates the patch's MIM-1D solver, or re-targets the one it already has. Returns an empty string, or why not.
-std::string prepare_mim1d_solver(PatchProblem& p, double E_star, const Mim1dOptions& options) {
-  const double strips = strip_count(p.gap, options.strip_width_m);
+std::string prepare_mim1d_solver(std::unique_ptr<Mim1dSolver>& solver, const GapProfile& gap, double E_star,
+                                 const Mim1dOptions& options) {
+  const double strips = strip_count(gap, options.strip_width_m);
   if (!(strips <= static_cast<double>(kMaxStripsPerPatch)))
     return "patch needs " + number_text(strips) + " strips (max " + std::to_string(kMaxStripsPerPatch) +
            "): strip width too small";
   try {
-    if (p.solver && p.solver->matches(E_star, options)) p.solver->reset(p.gap);
-    else p.solver = std::make_unique<Mim1dSolver>(p.gap, E_star, options);
+    if (solver && solver->matches(E_star, options)) solver->reset(gap);
+    else solver = std::make_unique<Mim1dSolver>(gap, E_star, options);
   } catch (const std::exception& e) {
     return std::string("MIM-1D set-up: ") + e.what();
   }
@@ -379,6 +380,7 @@ struct WheelContactWorkspace::Impl {
   std::vector<GapMinimum> minima;
   std::vector<PatchProblem> pool;  // patch problems; the first `used` are this case's
   Mim1dWarmStart pass_start;       // the main patch's previous pass (solve_main_for_load), when not warm-started
+  std::unique_ptr<Mim1dSolver> other_width;  // resolve_at_strip_width's solver
   std::size_t used = 0;
   PatchProblem& acquire() { return pool[used++]; }  // the pool is sized before use
 };
@@ -653,6 +655,7 @@ class WheelCase {
     if (options_.method == NormalMethod::Mim1d && is_success(main.solution.status))
       main.solver->save_warm_start(main.solution, ws_.pass_start);
     result_.iterations += main.solution.iterations;
+    result_.matrix_entries += main.solution.matrix_entries;
   }
 
   ForceComponents solution_force(const PatchProblem& p) const {
@@ -723,7 +726,7 @@ class WheelCase {
   // Only MIM-1D keeps a strip solver per patch (reused from case to case); the other rungs are one-shot.
   bool prepare(PatchProblem& p) {
     if (options_.method != NormalMethod::Mim1d) return true;
-    detail_ = prepare_mim1d_solver(p, E_star_, options_.mim1d);
+    detail_ = prepare_mim1d_solver(p.solver, p.gap, E_star_, options_.mim1d);
     return detail_.empty();
   }
 
@@ -791,6 +794,7 @@ class WheelCase {
     p.solution = options_.method == NormalMethod::Mim1d ? p.solver->solve_for_approach(approach)
                                                         : solve_other_rung(p, Loading::approach(approach));
     result_.iterations += p.solution.iterations;
+    result_.matrix_entries += p.solution.matrix_entries;
   }
 
   // A rung other than MIM-1D on a patch's strip problem (normal_contact.hpp).
@@ -955,6 +959,29 @@ WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double r
                                  LoadKind load, double load_value, const WheelRailOptions& options,
                                  WheelContactWorkspace& workspace, Mim1dWarmStart& warm_start) {
   return WheelCase(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace.impl(), &warm_start).solve();
+}
+
+StripWidthTotals resolve_at_strip_width(WheelContactWorkspace& workspace, double E_star_Pa,
+                                        const Mim1dOptions& options) noexcept {
+  WheelContactWorkspace::Impl& ws = workspace.impl();
+  StripWidthTotals totals;
+  for (std::size_t k = 0; k < ws.used; ++k) {
+    const PatchProblem& p = ws.pool[k];
+    double force_N = 0.0;
+    for (const PatchSolution& run : p.solution.patches) force_N += run.normal_force_N;
+    if (!is_success(p.solution.status) || !(force_N > 0.0)) continue;
+    if (!prepare_mim1d_solver(ws.other_width, p.gap, E_star_Pa, options).empty()) return {};
+    const NormalSolution solution = ws.other_width->solve_for_load(force_N, Mim1dWarmStart{}, options.tolerance);
+    if (!is_success(solution.status)) return {};
+    totals.matrix_entries += solution.matrix_entries;
+    for (const PatchSolution& run : solution.patches) {
+      totals.area_m2 += run.area_m2;
+      totals.max_pressure_Pa = std::max(totals.max_pressure_Pa, run.max_pressure_Pa);
+      totals.strips += std::round((run.y_max_m - run.y_min_m) / options.strip_width_m);
+    }
+    totals.solved = true;
+  }
+  return totals;
 }
 
 }  // namespace ctab::gen

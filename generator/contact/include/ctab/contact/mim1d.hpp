@@ -156,9 +156,10 @@ class Mim1dSolver {
   StripGrid grid_;
   double E_star_Pa_;
   Mim1dOptions options_;
-  double tolerance_;     // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
-  double b_;             // strip half-width [m]
-  double kernel_scale_;  // 2 / (pi^2 E* b) [m/N]
+  double tolerance_;             // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
+  double matrix_entries_ = 0.0;  // influence-matrix entries built so far (NormalSolution::matrix_entries)
+  double b_;                     // strip half-width [m]
+  double kernel_scale_;          // 2 / (pi^2 E* b) [m/N]
   std::vector<StripHertz> compliance_;          // local Hertz data per strip (all strips)
   std::vector<StripHertz> shifted_compliance_;  // compliance_ at a slightly larger approach (fill_approach_column)
   double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for

@@ -35,6 +35,9 @@ struct NormalSolution {
   int outer_iterations = 0;    //!< iterations on delta for a prescribed load (0 for a prescribed approach)
   double residual = 0.0;       //!< final relative residual (displacement for delta, force for load) [-]
   double solve_time_s = 0.0;   //!< wall-clock time of the solve [s]
+  //! MIM-1D: entries of the influence matrices built, n^2 per iteration on n loaded strips [-] (a deterministic
+  //! measure of the solve's cost, for the least model's test; 0 for the other methods).
+  double matrix_entries = 0.0;
   std::vector<PatchSolution> patches;
   //! Empty, or why the solve failed where the status alone does not say (e.g. bem2d: "grid of 1638 x 164 elements
   //! (max 1024 per side): element size too small").

@@ -3,27 +3,31 @@
 //! strip width whose estimated error in area and max pressure stays within T against MIM-1D at a fine width.
 //!
 //! Estimator (least_model_test):
-//! 1. First look: MIM-1D at the coarsest width of the ladder kAutoStripWidths_m (0.8 mm; about 1/16 of the cost
-//!    of 0.2 mm on a tread patch). Its smallest loaded patch (>= 5 % of the force, resolution.hpp) is W wide.
-//! 2. Start: the coarsest ladder width w with at least kMinResolvedStrips (8) strips across W, and never the first
-//!    look's own width (a check needs a coarser solution): the widths below 8 strips are those where the stability
-//!    matrix measured MIM-1D up to 38 % off.
-//! 3. Richardson-type check: solve at w; with the solution at 2w (the first look, or solved for the check) the
-//!    error of the solution at w is estimated as e(w) = max(|A_w - A_2w| / A_w, |p_w - p_2w| / p_w), the estimate for
-//!    a first-order method (error proportional to w: err(w) = err(2w) - err(w)); MIM-1D's measured error on the
-//!    S1002/UIC60 sweep falls about as 1/n (0.8 mm: up to 27 % at n = 2 and 1.8 % at n = 24). The solution at w is
-//!    taken when kAutoSafetyFactor * e(w) <= T and it is not under-resolved (every patch with >= 5 % of the force
-//!    on >= 8 strips); else w is halved, down to the finest ladder width, which is taken whatever its estimate.
-//! A case the first look cannot solve is solved once at kAutoFallbackWidth_m (as `--method mim1d` would); a
-//! first look without contact is the answer.
+//! 1. First solve: MIM-1D at 0.4 mm (kAutoFirstRung), the gap correction of solve_wheel_contact included. Its
+//!    smallest loaded patch (>= 5 % of the force, resolution.hpp) is W wide.
+//! 2. Start: the coarsest ladder width w >= 0.4 mm with at least kMinResolvedStrips (8) strips across W (solved
+//!    afresh when finer than the first solve): the widths below 8 strips are those where the stability matrix
+//!    measured MIM-1D up to 38 % off.
+//! 3. Richardson-type check: the case's final gap samples and patch loads are solved again at 2w
+//!    (resolve_at_strip_width: geometry and load held, the strip width alone changed, no second gap correction),
+//!    and the error of the solution at w is estimated as e(w) = max(|A_w - A_2w| / A_w, |p_w - p_2w| / p_w), the
+//!    estimate for a first-order method (error proportional to w: err(w) = err(2w) - err(w)); MIM-1D's measured
+//!    error on the S1002/UIC60 sweep falls about as 1/n (0.8 mm: up to 27 % at n = 2 and 1.8 % at n = 24). The
+//!    solution at w is taken when kAutoSafetyFactor * e(w) <= T and it is not under-resolved (every patch with
+//!    >= 5 % of the force on >= 8 strips); else w is halved, down to the finest ladder width, which is taken
+//!    whatever its estimate.
+//! A case the first solve cannot solve is solved once at kAutoFallbackWidth_m (as `--method mim1d` would); a
+//! first solve without contact is the answer.
 #include <array>
 
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 
 namespace ctab::gen {
 
-//! Strip widths the least model chooses from, coarsest first [m].
+//! Strip widths of the least model, coarsest first [m]: it chooses from kAutoFirstRung on; 0.8 mm only checks 0.4.
 inline constexpr std::array<double, 5> kAutoStripWidths_m{0.8e-3, 0.4e-3, 0.2e-3, 0.1e-3, 0.05e-3};
+//! The ladder index of the first solve (0.4 mm).
+inline constexpr std::size_t kAutoFirstRung = 1;
 //! Margin on the estimate: the check takes e(w) <= T / kAutoSafetyFactor [-].
 inline constexpr double kAutoSafetyFactor = 1.0;
 //! Width after a failed first look (the default strip width) [m].
@@ -34,21 +38,21 @@ inline constexpr double kAutoDefaultTolerance = 0.02;
 //! The ladder index at which the check starts for a smallest loaded patch `patch_width_m` wide (step 2 above).
 [[nodiscard]] std::size_t auto_start_rung(double patch_width_m) noexcept;
 
-//! e(w) of step 3: the larger relative change of total area and max pressure from `coarse` to `fine` [-]
-//! (+inf when either has no loaded patch).
-[[nodiscard]] double richardson_error(const WheelContact& fine, const WheelContact& coarse) noexcept;
+//! e(w) of step 3: the larger relative change of total area and max pressure from `coarse` (the same case's samples
+//! at 2w) to `fine` [-] (+inf when either has no loaded patch or the coarse solve failed).
+[[nodiscard]] double richardson_error(const WheelContact& fine, const StripWidthTotals& coarse) noexcept;
 
 //! What the least model chose for a case.
 struct AutoChoice {
   ContactMethod method = ContactMethod::Mim1d;
   double strip_width_m = 0.0;    //!< chosen strip width [m]
-  double patch_width_m = 0.0;    //!< W of the first look [m] (0 when it failed or found no contact)
+  double patch_width_m = 0.0;    //!< W of the first solve [m] (0 when it failed or found no contact)
   double estimated_error = 0.0;  //!< e(w) at the chosen width [-] (0 when no check was made)
-  int solves = 0;                //!< wheel solves made, the first look included
-  double strips_solved = 0.0;    //!< strips of all patches, summed over the solves [-]
-  //! Squared strips per patch, summed over the solves [-]: the entries of MIM-1D's dense influence matrices, the
-  //! cost measure of the tests (its LU grows faster still; wall time is measured by the bench, not the tests).
-  double influence_entries = 0.0;
+  int solves = 0;                //!< wheel solves made (the checks at 2w re-solve strips only: not counted)
+  double strips_solved = 0.0;    //!< strips of all patches, summed over the solves and the checks [-]
+  //! Influence-matrix entries MIM-1D built, every iteration of the solves and the checks [-] (WheelContact): the
+  //! cost measure of the tests (the LU grows faster still; wall time is measured by the bench, not the tests).
+  double matrix_entries = 0.0;
 };
 
 //! Solves one wheel case with the least model (options.method and options.mim1d.strip_width_m are overridden).
@@ -58,8 +62,7 @@ struct AutoChoice {
                                                     const WheelRailOptions& options, double tolerance,
                                                     WheelContactWorkspace& workspace, AutoChoice* choice = nullptr);
 
-//! Strips of all loaded patches of `contact` at strip width `strip_width_m` [-]; with `squared`, the sum of the
-//! squares (influence-matrix entries).
-[[nodiscard]] double strips_in(const WheelContact& contact, double strip_width_m, bool squared = false) noexcept;
+//! Strips of all loaded patches of `contact` at strip width `strip_width_m` [-].
+[[nodiscard]] double strips_in(const WheelContact& contact, double strip_width_m) noexcept;
 
 }  // namespace ctab::gen

@@ -77,6 +77,7 @@ struct WheelContact {
   double normal_force_N = 0.0;       //!< sum over patches
   double vertical_force_N = 0.0;     //!< sum of the patches' force_vertical_N
   int iterations = 0;                //!< MIM-1D iterations, all patches and root-finding steps
+  double matrix_entries = 0.0;       //!< MIM-1D influence-matrix entries built, the same (NormalSolution) [-]
   double solve_time_s = 0.0;
   std::vector<ContactPatch> patches;
   std::vector<GapMinimum> near_misses;  //!< minima not in contact, with their vertical gap
@@ -115,5 +116,21 @@ class WheelContactWorkspace {
 //! The same with a temporary workspace.
 [[nodiscard]] WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
                                                LoadKind load, double load_value, const WheelRailOptions& options);
+
+//! Totals of resolve_at_strip_width.
+struct StripWidthTotals {
+  double area_m2 = 0.0;          //!< total area of the loaded runs [m^2]
+  double max_pressure_Pa = 0.0;  //!< largest peak pressure [Pa]
+  double strips = 0.0;           //!< strips of the loaded runs [-]
+  double matrix_entries = 0.0;   //!< influence-matrix entries the solves built [-] (NormalSolution)
+  bool solved = false;           //!< false: no loaded patch, or a strip solve failed (the totals are then zero)
+};
+
+//! The last case solved in `workspace` solved again with MIM-1D (options, at its strip width) on the very gap samples
+//! that case ended with, each patch problem at the normal force its loaded runs carried: the change that the strip
+//! width alone makes, geometry and load held fixed (the least model's error estimate, least_model.hpp). Only the
+//! workspace's spare solver changes; the case's own patch problems stay as they were. Never throws.
+[[nodiscard]] StripWidthTotals resolve_at_strip_width(WheelContactWorkspace& workspace, double E_star_Pa,
+                                                      const Mim1dOptions& options) noexcept;
 
 }  // namespace ctab::gen
