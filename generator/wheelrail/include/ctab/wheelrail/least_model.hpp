@@ -30,7 +30,7 @@ inline constexpr std::array<double, 5> kAutoStripWidths_m{0.8e-3, 0.4e-3, 0.2e-3
 inline constexpr std::size_t kAutoFirstRung = 1;
 //! Margin on the estimate: the check takes e(w) <= T / kAutoSafetyFactor [-].
 inline constexpr double kAutoSafetyFactor = 1.0;
-//! Width after a failed first look (the default strip width) [m].
+//! Width after a failed first solve (the default strip width) [m].
 inline constexpr double kAutoFallbackWidth_m = 0.2e-3;
 //! Default tolerance of `--method auto` [-].
 inline constexpr double kAutoDefaultTolerance = 0.02;
