@@ -36,12 +36,6 @@ Totals totals(const WheelContact& contact) {
 
 }  // namespace
 
-double strips_in(const WheelContact& contact, double strip_width_m) noexcept {
-  double strips = 0.0;
-  for (const ContactPatch& p : contact.patches) strips += std::round((p.s_max_m - p.s_min_m) / strip_width_m);
-  return strips;
-}
-
 std::size_t auto_start_rung(double patch_width_m) noexcept {
   for (std::size_t k = 1; k < kAutoStripWidths_m.size(); ++k)
     if (patch_width_m / kAutoStripWidths_m[k] >= kMinResolvedStrips * (1.0 - 1e-9)) return k;
@@ -66,7 +60,6 @@ WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, dou
     at.mim1d.strip_width_m = width_m;
     WheelContact solved = solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, at, workspace);
     ++chosen.solves;
-    chosen.strips_solved += strips_in(solved, width_m);
     chosen.matrix_entries += solved.matrix_entries;
     chosen.strip_width_m = width_m;
     return solved;
@@ -89,7 +82,6 @@ WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, dou
     Mim1dOptions coarse = at.mim1d;
     coarse.strip_width_m = 2.0 * kAutoStripWidths_m[rung];
     const StripWidthTotals check = resolve_at_strip_width(workspace, E_star_Pa, coarse);
-    chosen.strips_solved += check.strips;
     chosen.matrix_entries += check.matrix_entries;
     chosen.estimated_error = richardson_error(fine, check);
     const bool last = rung + 1 == kAutoStripWidths_m.size();

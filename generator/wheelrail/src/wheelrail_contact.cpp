@@ -977,7 +977,6 @@ StripWidthTotals resolve_at_strip_width(WheelContactWorkspace& workspace, double
     for (const PatchSolution& run : solution.patches) {
       totals.area_m2 += run.area_m2;
       totals.max_pressure_Pa = std::max(totals.max_pressure_Pa, run.max_pressure_Pa);
-      totals.strips += std::round((run.y_max_m - run.y_min_m) / options.strip_width_m);
     }
     totals.solved = true;
   }

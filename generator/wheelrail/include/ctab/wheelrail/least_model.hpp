@@ -49,7 +49,6 @@ struct AutoChoice {
   double patch_width_m = 0.0;    //!< W of the first solve [m] (0 when it failed or found no contact)
   double estimated_error = 0.0;  //!< e(w) at the chosen width [-] (0 when no check was made)
   int solves = 0;                //!< wheel solves made (the checks at 2w re-solve strips only: not counted)
-  double strips_solved = 0.0;    //!< strips of all patches, summed over the solves and the checks [-]
   //! Influence-matrix entries MIM-1D built, every iteration of the solves and the checks [-] (WheelContact): the
   //! cost measure of the tests (the LU grows faster still; wall time is measured by the bench, not the tests).
   double matrix_entries = 0.0;
@@ -61,8 +60,5 @@ struct AutoChoice {
                                                     double E_star_Pa, LoadKind load, double load_value,
                                                     const WheelRailOptions& options, double tolerance,
                                                     WheelContactWorkspace& workspace, AutoChoice* choice = nullptr);
-
-//! Strips of all loaded patches of `contact` at strip width `strip_width_m` [-].
-[[nodiscard]] double strips_in(const WheelContact& contact, double strip_width_m) noexcept;
 
 }  // namespace ctab::gen

@@ -121,7 +121,6 @@ class WheelContactWorkspace {
 struct StripWidthTotals {
   double area_m2 = 0.0;          //!< total area of the loaded runs [m^2]
   double max_pressure_Pa = 0.0;  //!< largest peak pressure [Pa]
-  double strips = 0.0;           //!< strips of the loaded runs [-]
   double matrix_entries = 0.0;   //!< influence-matrix entries the solves built [-] (NormalSolution)
   bool solved = false;           //!< false: no loaded patch, or a strip solve failed (the totals are then zero)
 };
