@@ -59,6 +59,33 @@ TEST_P(Bem2dWheelRail, MatchesContactOnItsGrid) {
   EXPECT_LT(std::abs(pmax_error), c.pmax_guard > 0.0 ? c.pmax_guard : kTarget);
 }
 
+// The same cases in CONTACT's own contact plane (its reference point ycp_rail_mm and angle contact_angle_rad from the
+// same rows, WheelRailOptions::prescribed_reference): identical geometry, so only the normal solver differs.
+TEST_P(Bem2dWheelRail, MatchesContactInItsPlane) {
+  CTAB_REQUIRE_SHARED();
+  const Case c = GetParam();
+  const auto summary =
+      ctab::test::read_csv(ctab::test::shared_path(std::string("reference/contact/wheelrail/") + c.file));
+  const auto dys = summary.numbers("dy_mm"), areas = summary.numbers("area_mm2"), pmaxes = summary.numbers("pmax_MPa");
+  const auto ycps = summary.numbers("ycp_rail_mm"), angles = summary.numbers("contact_angle_rad");
+  ASSERT_EQ(std::count(dys.begin(), dys.end(), c.dy_mm), 1) << c.file << ": one patch at dy " << c.dy_mm;
+  const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
+  WheelRailOptions options;
+  options.method = NormalMethod::Bem2d;
+  options.prescribed_reference = PrescribedReference{ycps[row] * 1e-3, angles[row]};
+  options.bem2d_alignment = Bem2dAlignment::CentresAtOrigin;
+  const WheelContact contact = solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
+                                                   LoadKind::NormalForce, kLoad_N, options);
+  ASSERT_TRUE(is_success(contact.status)) << status_name(contact.status) << " " << contact.detail;
+  double area = 0.0, pmax = 0.0;
+  for (const ContactPatch& p : contact.patches) area += p.area_m2, pmax = std::max(pmax, p.max_pressure_Pa);
+  const double area_error = area * 1e6 / areas[row] - 1.0, pmax_error = pmax * 1e-6 / pmaxes[row] - 1.0;
+  std::cout << "dy " << c.dy_mm << " mm in CONTACT's plane (" << contact.patches.size() << " patch): area "
+            << 100 * area_error << " %, max pressure " << 100 * pmax_error << " %\n";
+  EXPECT_LT(std::abs(area_error), kTarget);
+  EXPECT_LT(std::abs(pmax_error), kTarget);
+}
+
 // Measured: area / max pressure -0.00 / -0.00 % (-1 mm), -0.10 / +0.28 % (0), +0.05 / +0.08 % (1 mm), 0.00 / +0.04 %
 // (2 mm), -0.54 / +1.86 % (5 mm), +0.56 / -0.03 % (5.5 mm), -1.90 / -0.77 % (6.5 mm), -0.86 / +0.43 % (7.5 mm). Not
 // met, with guards: 5 mm max pressure (ctab's two planes against CONTACT's one merged plane at the flange root) and

@@ -270,9 +270,14 @@ class PatchBuilder {
     const double tr = std::tan(std::atan(r.dz) - angle), tw = std::tan(std::atan(w.slope) - angle);
     const double gr = 1 + tr * tr, gw = 1 + tw * tw;
     out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
-    out.A = std::cos(angle) / (2.0 * w.radius_m);  // rolling radius seen along the normal: r / cos(angle)
     out.h = state.n_rail - state.n_wheel;
     out.weight = 1.0 / (std::cos(angle) + w.slope * std::sin(angle));  // dn_wheel / dz
+    // Along x the wheel (a surface of revolution about the lateral axis) rises vertically by x^2 / (2 r), r its radius
+    // at the point; along the normal that is seen as a vertical shift is, times dn_wheel/dz: A = weight / (2 r), or
+    // cos(phi) / (2 r cos(delta - phi)) with phi the wheel's inclination there. Only where the wheel is parallel to
+    // the plane is it cos(delta) / (2 r); taking that everywhere put the flange root's area 1.8 % under CONTACT's in
+    // CONTACT's own plane (dy 6.5 mm, bem2d; the wheel's inclination spans about +-10 deg across that patch).
+    out.A = out.weight / (2.0 * w.radius_m);
   }
 
   // Rail and wheel (lowered by dz) along the line: Newton on n for each; false outside the profiles.
@@ -432,6 +437,12 @@ class WheelCase {
     if (!std::isfinite(roll_)) return "roll angle is not finite";
     if (!std::isfinite(value_)) return "load is not finite";
     if (value_ < 0.0) return load_ == LoadKind::Approach ? "negative approach" : "negative load";
+    if (const auto& reference = options_.prescribed_reference) {
+      if (options_.surface != ContactSurface::Planar) return "a prescribed reference point needs the planar surface";
+      if (!std::isfinite(reference->contact_angle_rad) || !side_.rail().contains(reference->rail_y_m))
+        return "the prescribed reference point (rail y " + number_text(reference->rail_y_m) + " m, angle " +
+               number_text(reference->contact_angle_rad) + " rad) is not on the rail profile";
+    }
     return {};
   }
 
@@ -482,7 +493,18 @@ class WheelCase {
   // dy 6.5 mm with h sampled at first contact). A prescribed approach samples at it; a prescribed load repeats the
   // solve with h re-sampled at the solved dz (secant steps on dz) until dz moves by less than
   // kGapApproachTolerance_m and, vertical load, sum N_i cos(alpha_i) matches it (the normal force is rescaled).
-  SolveStatus solve_main_patch(double depth) { return solve_main_patch(depth, ws_.minima[0]); }
+  SolveStatus solve_main_patch(double depth) { return solve_main_patch(depth, main_reference()); }
+
+  // The main patch's reference point: the deepest gap minimum, or the prescribed point (WheelRailOptions).
+  GapMinimum main_reference() {
+    GapMinimum point = ws_.minima[0];
+    if (!options_.prescribed_reference) return point;
+    point.rail_y_m = options_.prescribed_reference->rail_y_m;
+    point.contact_angle_rad = options_.prescribed_reference->contact_angle_rad;
+    const WheelSurfacePoint w = builder_.wheel_at(point.rail_y_m, point.wheel_s_m);
+    point.rolling_radius_m = w.radius_m;
+    return point;
+  }
   SolveStatus solve_main_patch(double depth, const GapMinimum& reference) {
     ws_.used = 0;
     PatchProblem& main = ws_.acquire();
@@ -677,7 +699,7 @@ class WheelCase {
   // approach. The main patch is re-solved in the plane at that centre until the reference point moves by less than
   // kRecentreTolerance_m (at most kRecentrePasses passes).
   SolveStatus recentre_main_patch(double depth) {
-    if (!options_.reference_at_interpenetration_centre) return SolveStatus::Converged;
+    if (!options_.reference_at_interpenetration_centre || options_.prescribed_reference) return SolveStatus::Converged;
     for (int pass = 0; pass < kRecentrePasses; ++pass) {
       GapMinimum centre = ws_.minima[0];
       if (!interpenetration_centre(centre)) return SolveStatus::Converged;

@@ -27,6 +27,12 @@ enum class ContactSurface : std::int8_t {
   Conformal = 1,  //!< a curved surface midway between rail and wheel, s its arc length, one normal per strip
 };
 
+//! A contact reference point given from outside (WheelRailOptions::prescribed_reference).
+struct PrescribedReference {
+  double rail_y_m = 0.0;           //!< y on the rail profile [m]
+  double contact_angle_rad = 0.0;  //!< inclination of the contact plane (negative on the gauge side) [rad]
+};
+
 //! The rung of the method ladder (contact_method.hpp); the earlier name, same values.
 using NormalMethod = ContactMethod;
 
@@ -50,6 +56,12 @@ struct WheelRailOptions {
   //! like-for-like comparison with CONTACT (bem2d_wheelrail_test). Tables and `ctab bench accuracy` (at ctab's
   //! default deepest point) keep the edges at the origin.
   Bem2dAlignment bem2d_alignment = Bem2dAlignment::EdgesAtOrigin;
+  //! The main patch's plane through the rail point at rail_y_m, inclined at contact_angle_rad, instead of ctab's
+  //! own reference point (and no re-centring). For solving the same problem as another program: with CONTACT's
+  //! reference point and angle from its output, bem2d is compared with CONTACT on identical geometry
+  //! (bem2d_wheelrail_test). Planar surface only; a gap minimum outside the main patch's window still opens a patch
+  //! of its own at its own reference point.
+  std::optional<PrescribedReference> prescribed_reference;
 };
 
 //! Names of the contact surfaces (config [solver] surface, CLI --surface).
