@@ -3,7 +3,9 @@
 // elements on CONTACT's wheel-rail grid (element centres at multiples of the size from the reference point, which
 // is CONTACT's: the centre of the interpenetration region). Tread (../reference/contact/wheelrail/summary.csv) and
 // flange (flange/planar_normal_force.csv) cases; all patches summed (at 5 and 5.5 mm ctab solves tread and flange
-// root as two patches, CONTACT as one).
+// root as two patches, CONTACT as one). MatchesContactOnItsGrid solves in ctab's own contact planes;
+// MatchesContactInItsPlane in CONTACT's (its reference point and angle from the same rows): the geometry is then
+// identical and only the normal solvers differ, so that test holds the 1 % without exception.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -86,18 +88,21 @@ TEST_P(Bem2dWheelRail, MatchesContactInItsPlane) {
   EXPECT_LT(std::abs(pmax_error), kTarget);
 }
 
-// Measured: area / max pressure -0.00 / -0.00 % (-1 mm), -0.10 / +0.28 % (0), +0.05 / +0.08 % (1 mm), 0.00 / +0.04 %
-// (2 mm), -0.54 / +1.86 % (5 mm), +0.56 / -0.03 % (5.5 mm), -1.90 / -0.77 % (6.5 mm), -0.86 / +0.43 % (7.5 mm). Not
-// met, with guards: 5 mm max pressure (ctab's two planes against CONTACT's one merged plane at the flange root) and
-// 6.5 mm area (ctab's plane is 0.33 deg shallower than CONTACT's reference angle; at the root the lateral relative
-// curvature is nearly zero and the area follows the plane: README "Flange and flank"). With the element edges at
-// the origin instead (bem2d's default) the tread cases were off by up to 0.23 % and the flank by -4.1 %.
+// Measured (ctab's own contact planes / CONTACT's plane), area and max pressure: -1 mm 0.00 / -0.00 %, 0.00 / -0.00 %;
+// 0: -0.14 / +0.26 %, +0.05 / +0.10 %; 1 mm: 0.00 / +0.06 %, -0.10 / +0.02 %; 2 mm: 0.00 / +0.02 %, +0.21 / +0.01 %;
+// 5 mm: -0.65 / +1.61 %, -0.15 / +0.30 %; 5.5 mm: -0.43 / +0.01 %, +0.50 / +0.32 %; 6.5 mm: 0.00 / -0.14 %, -0.21 /
+// +0.03 %; 7.5 mm: 0.00 / +0.01 %, -0.64 / +0.47 %. Not met on ctab's own planes, with a guard: 5 mm max pressure
+// (ctab's plane at the deepest point against CONTACT's one plane through the merged tread and flange-root region; in
+// CONTACT's plane +0.30 %). Before the wheel's rise along x was seen along the normal (wheelrail_contact.cpp,
+// fill_strip_geometry) the flange root was off by -1.90 % in area on ctab's plane and -1.80 % in CONTACT's, the
+// flank by -0.86 / -1.07 %. With the element edges at the origin instead (bem2d's default) the tread cases were off
+// by up to 0.23 % and the flank by -4.1 %.
 INSTANTIATE_TEST_SUITE_P(Cases, Bem2dWheelRail,
                          ::testing::Values(Case{"summary.csv", -1.0}, Case{"summary.csv", 0.0},
                                            Case{"summary.csv", 1.0}, Case{"summary.csv", 2.0},
-                                           Case{"summary.csv", 5.0, 0.0, 0.019},
+                                           Case{"summary.csv", 5.0, 0.0, 0.017},
                                            Case{"flange/planar_normal_force.csv", 5.5},
-                                           Case{"flange/planar_normal_force.csv", 6.5, 0.020},
+                                           Case{"flange/planar_normal_force.csv", 6.5},
                                            Case{"flange/planar_normal_force.csv", 7.5}),
                          [](const ::testing::TestParamInfo<Case>& p) {
                            std::string name = "dy_" + std::to_string(static_cast<int>(std::lround(p.param.dy_mm * 10)));

@@ -106,15 +106,16 @@ TEST_F(FlangeReference, ReferencePointMatchesContact) {
 }
 
 // Guards: {area, pmax, cop_mm, angle_deg, lateral, p0_rms}; 0 = the target holds. Measured with the gap
-// sampled at the solved vertical approach (wheelrail_contact.cpp, solve_main_patch; before: h at first contact):
-//   VL 5.5: area +1.53 % (was -7.7), pmax +0.41, cop +0.031 mm (was -0.38), direction -1.48 deg, lateral 2.84 %
-//   VL 6.5: area -1.28 % (was +17.7), pmax -0.94 % (was -11.5), cop +0.004 mm (was -0.58), direction 0.38 deg,
-//           p0 rms 2.6 %
-//   VL 7.5: area -6.23 % (CONTACT's element count; -1.6 % against the ellipse of its rows, flank_grid_test),
-//           direction 0.274 deg, lateral -3.86 %, p0 rms 3.6 %
-//   NF 5.5: area +0.17 % (was -9.5), cop 0.000 mm, direction -1.35 deg, lateral 2.34 %
-//   NF 6.5: area -1.42 % (was +16.0), pmax -0.89 %, cop +0.003 mm, direction 0.33 deg, p0 rms 5.3 %
-//   NF 7.5: area -8.96 % (-1.5 % against the ellipse), p0 rms 17.2 % (7 strips of 0.2 mm, the two edge strips just
+// sampled at the solved vertical approach (wheelrail_contact.cpp, solve_main_patch; before: h at first contact) and
+// the wheel's rise along x seen along the plane normal (fill_strip_geometry; before: cos(delta) / 2r at every strip):
+//   VL 5.5: area +0.65 % (was -7.7), pmax +0.46, cop +0.019 mm (was -0.38), direction -1.48 deg, lateral 2.84 %
+//   VL 6.5: area -0.13 % (was +17.7, then -1.28), pmax -0.38 % (was -11.5), cop -0.036 mm (was -0.58), direction
+//           0.38 deg, p0 rms 2.6 %
+//   VL 7.5: area -5.69 % (CONTACT's element count; -1.1 % against the ellipse of its rows, flank_grid_test),
+//           direction 0.265 deg, lateral -3.73 %, p0 rms 4.0 %
+//   NF 5.5: area -0.67 % (was -9.5), cop -0.011 mm, direction -1.35 deg, lateral 2.34 %
+//   NF 6.5: area -0.39 % (was +16.0, then -1.42), pmax -0.35 %, cop -0.032 mm, direction 0.33 deg, p0 rms 5.3 %
+//   NF 7.5: area -8.46 % (-1.0 % against the ellipse), p0 rms 17.2 % (7 strips of 0.2 mm, the two edge strips just
 //           outside the patch; 5.6 % at 0.1 mm)
 // The p0 profile places ctab's strips on CONTACT's row line (manchester_side.hpp, ContactRowLine); with the rail
 // points below the strips it was 7.7 / 10.7 / 6.4 / 17.1 % at VL 6.5 / VL 7.5 / NF 6.5 / NF 7.5, and those guards
