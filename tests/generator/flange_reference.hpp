@@ -127,6 +127,7 @@ struct Deviation {
   double vertical_balance = 0;   // sum force_vertical_N / prescribed - 1
   double contact_angle_deg = 0;  // ctab's load-weighted contact_angle_rad - CONTACT's direction
   double rail_point_mm = 0;      // ctab's reference point on the rail (main patch) - CONTACT's
+  double plane_angle_deg = 0;    // ctab's main-patch plane angle - CONTACT's direction (planar: its reference angle)
   int patches = 0;
 };
 
@@ -157,6 +158,7 @@ inline Deviation deviation(const gen::WheelContact& contact, const Reference& re
   e.vertical_balance = vertical / kLoad_N - 1.0;
   e.contact_angle_deg = angle / force * kDegPerRad - ref.direction_deg;
   e.rail_point_mm = contact.patches.front().y_rail_m * 1e3 - ref.rail_point_mm;
+  e.plane_angle_deg = contact.patches.front().plane_angle_rad * kDegPerRad - ref.direction_deg;
   return e;
 }
 

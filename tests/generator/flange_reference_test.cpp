@@ -63,7 +63,8 @@ TEST_P(FlangeReference, PlanarMatchesContact) {
 // -69.99 deg for every dy from 6.7 to 7.6 mm (issue 8); CONTACT moves between -68.6 and -69.4 deg.
 TEST_F(FlangeReference, FlankReferencePointFollowsTheShift) {
   CTAB_REQUIRE_SHARED();
-  // Measured (vertical load): -60.6 deg at 6.7 mm, -66.6 at 6.8, then -67.4 ... -69.16 deg from 6.9 to 7.6 mm.
+  // Measured (vertical load): -56.1 deg at 6.7 mm, -64.1 at 6.8, then -67.5 ... -69.41 deg from 6.9 to 7.6 mm (the
+  // inclination at the centre instead of the weighted mean: -60.6, -66.6, -67.4 ... -69.16 deg).
   double previous = 0.0, lowest = 0.0, highest = -M_PI;
   int moves = 0;
   for (int k = 0; k <= 9; ++k) {
@@ -105,26 +106,45 @@ TEST_F(FlangeReference, ReferencePointMatchesContact) {
   }
 }
 
+// The plane's inclination against CONTACT's reference angle (DELT_CP): the weighted mean of the rail's inclination
+// over the interpenetration region (interpenetration_centre). Measured: VL 5.5 / 6.5 / 7.5 mm -0.012 / -0.001 /
+// -0.004 deg, NF -0.010 / -0.001 / -0.000 deg; the inclination at the centre was 0.3-0.4 deg shallower at the root
+// and flank, and at 5.5 mm (tread and flange root in one region) 2.6 deg.
+TEST_F(FlangeReference, PlaneAngleMatchesContactsReferenceAngle) {
+  CTAB_REQUIRE_SHARED();
+  for (const char* loading : {"vertical_load", "normal_force"}) {
+    for (const char* tag : {"p5p50", "p6p50", "p7p50"}) {
+      const double dy = tag[1] == '5' ? 5.5 : tag[1] == '6' ? 6.5 : 7.5;
+      const Deviation e = measure(Case{loading, dy, tag, {}});
+      EXPECT_LT(std::abs(e.plane_angle_deg), 0.05) << loading << " dy " << dy << " mm";
+    }
+  }
+}
+
 // Guards: {area, pmax, cop_mm, angle_deg, lateral, p0_rms}; 0 = the issue's target holds. Measured with the gap
-// sampled at the solved vertical approach (wheelrail_contact.cpp, solve_main_patch; before: h at first contact) and
-// the wheel's rise along x seen along the plane normal (fill_strip_geometry; before: cos(delta) / 2r at every strip):
-//   VL 5.5: area +0.65 % (was -7.7), pmax +0.46, cop +0.019 mm (was -0.38), direction -1.48 deg, lateral 2.84 %
-//   VL 6.5: area -0.13 % (was +17.7, then -1.28), pmax -0.38 % (was -11.5), cop -0.036 mm (was -0.58), direction
-//           0.38 deg, p0 rms 2.6 %
-//   VL 7.5: area -5.69 % (CONTACT's element count; -1.1 % against the ellipse of its rows, flank_grid_test),
-//           direction 0.265 deg, lateral -3.73 %, p0 rms 4.0 %
-//   NF 5.5: area -0.67 % (was -9.5), cop -0.011 mm, direction -1.35 deg, lateral 2.34 %
-//   NF 6.5: area -0.39 % (was +16.0, then -1.42), pmax -0.35 %, cop -0.032 mm, direction 0.33 deg, p0 rms 5.3 %
+// sampled at the solved vertical approach (wheelrail_contact.cpp, solve_main_patch; before: h at first contact), the
+// wheel's rise along x seen along the plane normal (fill_strip_geometry; before: cos(delta) / 2r at every strip) and
+// CONTACT's reference angle, the weighted mean of the rail's inclination over the interpenetration region, with one
+// plane for a region that spans tread and flange root (interpenetration_centre; before: the inclination at the
+// centre, and the deepest point kept for such a region):
+//   VL 5.5: area -0.59 % (was -7.7), pmax +0.28, cop -0.014 mm (was -0.38), direction -0.012 deg (was -1.48),
+//           lateral 0.02 % (was 2.84), p0 rms 1.1 %, reference point -0.020 mm (was -1.34)
+//   VL 6.5: area +0.10 % (was +17.7, then -1.28), pmax -0.04 % (was -11.5), cop -0.034 mm (was -0.58), direction
+//           -0.001 deg (was 0.38), p0 rms 2.1 %
+//   VL 7.5: area -4.76 % (CONTACT's element count; flank_grid_test), direction -0.004 deg, lateral 0.015 % (was
+//           -3.86), p0 rms 3.7 %
+//   NF 5.5: area -0.33 % (was -9.5), cop -0.008 mm, direction -0.010 deg (was -1.35), lateral 0.01 % (was 2.34)
+//   NF 6.5: area -0.42 % (was +16.0), pmax -0.19 %, cop -0.030 mm, direction -0.001 deg (was 0.33), p0 rms 5.26 %
 //   NF 7.5: area -8.46 % (-1.0 % against the ellipse), p0 rms 17.2 % (7 strips of 0.2 mm, the two edge strips just
 //           outside the patch; 5.6 % at 0.1 mm)
 // The p0 profile places ctab's strips on CONTACT's row line (manchester_side.hpp, ContactRowLine); with the rail
 // points below the strips it was 7.7 / 10.7 / 6.4 / 17.1 % at VL 6.5 / VL 7.5 / NF 6.5 / NF 7.5, and those guards
 // (0.08, 0.115, 0.07) are now the target or tighter.
 INSTANTIATE_TEST_SUITE_P(Planar, FlangeReference,
-                         ::testing::Values(Case{"vertical_load", 5.5, "p5p50", {0, 0, 0, 1.6, 0.030, 0}},
-                                           Case{"vertical_load", 6.5, "p6p50", {0, 0, 0, 0.40, 0, 0}},
-                                           Case{"vertical_load", 7.5, "p7p50", {0, 0, 0, 0, 0.040, 0}},
-                                           Case{"normal_force", 5.5, "p5p50", {0, 0, 0, 1.45, 0.025, 0}},
-                                           Case{"normal_force", 6.5, "p6p50", {0, 0, 0, 0.35, 0, 0.06}},
+                         ::testing::Values(Case{"vertical_load", 5.5, "p5p50", {}},
+                                           Case{"vertical_load", 6.5, "p6p50", {}},
+                                           Case{"vertical_load", 7.5, "p7p50", {}},
+                                           Case{"normal_force", 5.5, "p5p50", {}},
+                                           Case{"normal_force", 6.5, "p6p50", {0, 0, 0, 0, 0, 0.06}},
                                            Case{"normal_force", 7.5, "p7p50", {0, 0, 0, 0, 0, 0.18}}),
                          case_name);

@@ -83,6 +83,43 @@ TEST_P(WheelRailContact, MatchesContact) {
   std::cout << report.str() << '\n';
 }
 
+// With CONTACT's reference rule (--reference-point interpenetration-centre: the weighted centre of the
+// interpenetration region, the plane at the weighted mean of the rail's inclination over it) the plane is CONTACT's
+// at every dy, also at 5 mm where tread and flange root form one region: ctab solves both runs in that one plane, as
+// CONTACT does, and the force points along its normal.
+TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRule) {
+  CTAB_REQUIRE_SHARED();
+  const Case c = GetParam();
+  const auto summary = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
+  const auto dys = summary.numbers("dy_mm");
+  const std::size_t row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
+  ASSERT_LT(row, dys.size());
+  const double ref_angle_deg = summary.numbers("contact_angle_rad")[row] * 180 / M_PI;
+  const double ref_area = summary.numbers("area_mm2")[row], ref_pmax = summary.numbers("pmax_MPa")[row];
+  WheelRailOptions options;
+  options.reference_at_interpenetration_centre = true;
+  const WheelContact contact = solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
+                                                   LoadKind::NormalForce, 78.5e3, options);
+  ASSERT_EQ(contact.status, SolveStatus::Converged);
+  ASSERT_FALSE(contact.patches.empty());
+  double area = 0, pmax = 0, lateral = 0, vertical = 0;
+  for (const auto& p : contact.patches) {
+    area += p.area_m2;
+    pmax = std::max(pmax, p.max_pressure_Pa);
+    lateral += p.force_lateral_N;
+    vertical += p.force_vertical_N;
+  }
+  const double plane_deg = contact.patches.front().plane_angle_rad * 180 / M_PI;
+  const double direction_deg = -std::atan2(lateral, vertical) * 180 / M_PI;
+  std::cout << "dy " << c.dy_mm << " mm (" << contact.patches.size() << " patch): plane " << plane_deg - ref_angle_deg
+            << " deg, force direction " << direction_deg - ref_angle_deg << " deg, area "
+            << 100 * (area * 1e6 / ref_area - 1) << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %\n";
+  EXPECT_NEAR(plane_deg, ref_angle_deg, 0.2);
+  EXPECT_NEAR(direction_deg, ref_angle_deg, 0.2);
+  EXPECT_NEAR(area * 1e6 / ref_area - 1.0, 0.0, 0.02);
+  EXPECT_NEAR(pmax * 1e-6 / ref_pmax - 1.0, 0.0, 0.05);
+}
+
 INSTANTIATE_TEST_SUITE_P(ContactCases, WheelRailContact,
                          ::testing::Values(Case{-1.0, "m1p00"}, Case{0.0, "p0p00"}, Case{1.0, "p1p00"},
                                            Case{2.0, "p2p00"}, Case{5.0, "p5p00"}),

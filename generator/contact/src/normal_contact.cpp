@@ -37,9 +37,10 @@ NormalSolution solve_mim1d(const GapProfile& gap, const MethodOptions& options, 
   }
 }
 
-// The reference on square elements of the strip width (one element row per strip).
+// The reference on elements of the strip width (one element row per strip), square unless a length is given.
 NormalSolution solve_bem2d(const GapProfile& gap, const MethodOptions& options, Loading loading) {
-  Bem2dGrid grid{.dx_m = options.strip_width_m, .dy_m = options.strip_width_m};
+  const double length_m = options.bem2d_element_length_m > 0.0 ? options.bem2d_element_length_m : options.strip_width_m;
+  Bem2dGrid grid{.dx_m = length_m, .dy_m = options.strip_width_m};
   grid.alignment = options.bem2d_alignment;
   return approach_given(loading) ? solve_bem2d_for_approach(gap, options.E_star_Pa, grid, loading.value)
                                  : solve_bem2d_for_load(gap, options.E_star_Pa, grid, loading.value);

@@ -42,10 +42,10 @@ struct WheelRailOptions {
   double sample_step_m = 0.1e-3;  //!< sampling of h(s) in the contact plane [m]
   //! Contact reference point (plane of the main patch): false = the deepest rigid point (the default, as the tables
   //! were validated); true = CONTACT's rule, the centre of the interpenetration region at the solved approach
-  //! (weights pen^(5/2)), kept at the deepest point when the region holds a second gap minimum. On the flange
-  //! flank (rail arc against the straight 70 deg wheel flank) the deepest point stays where the rail slope is
-  //! -70 deg (-69.99 deg for every dy 6.7-7.6 mm); the centre follows the patch (flange_reference_test). Off by
-  //! default: it moves the
+  //! (weights pen^(5/2)), the plane inclined at the weighted mean of the rail's inclination over the region (a
+  //! region spanning tread and flange root is one plane, as CONTACT combines them). On the flange flank (rail arc
+  //! against the straight 70 deg wheel flank) the deepest point stays where the rail slope is -70 deg (-69.99 deg for
+  //! every dy 6.7-7.6 mm); the centre follows the patch (flange_reference_test). Off by default: it moves the
   //! interpolated default table's flange force by up to 4.4 % at dy 6.33 mm (lookup_accuracy_test guard 3 %).
   bool reference_at_interpenetration_centre = false;
   //! Contact surface (config [solver] surface, CLI --surface): planar (the default) or conformal (CONTACT's
@@ -56,6 +56,8 @@ struct WheelRailOptions {
   //! like-for-like comparison with CONTACT (bem2d_wheelrail_test). Tables and `ctab bench accuracy` (at ctab's
   //! default deepest point) keep the edges at the origin.
   Bem2dAlignment bem2d_alignment = Bem2dAlignment::EdgesAtOrigin;
+  //! bem2d's element length along x [m]; 0 = square elements of the strip width (MethodOptions).
+  double bem2d_element_length_m = 0.0;
   //! The main patch's plane through the rail point at rail_y_m, inclined at contact_angle_rad, instead of ctab's
   //! own reference point (and no re-centring). For solving the same problem as another program: with CONTACT's
   //! reference point and angle from its output, bem2d is compared with CONTACT on identical geometry
