@@ -3,16 +3,18 @@
 # (20 ... 150 kN; for the approach kind ten approaches 20 ... 200 um), both modes, built-in and Manchester profiles,
 # each loading kind, through `ctab generate`. Prints one line per table and the total count of failed wheel cases.
 #
-#   tests/bench/convergence_sweep.sh [CTAB] [PROFILES_DIR] [STEP_M] [SURFACE]
+#   tests/bench/convergence_sweep.sh [CTAB] [PROFILES_DIR] [STEP_M] [SURFACE] [REFERENCE_POINT]
 #
 # CTAB defaults to build/bin/ctab, PROFILES_DIR to ../shared/profiles (the Manchester files), STEP_M to 1e-5,
-# SURFACE (planar or conformal, [solver] surface) to planar.
+# SURFACE (planar or conformal, [solver] surface) to planar, REFERENCE_POINT (deepest or interpenetration-centre,
+# [solver] reference_point) to deepest.
 # Exit status: 0 when no case failed, 1 otherwise.
 set -euo pipefail
 ctab=${1:-build/bin/ctab}
 profiles=$(cd "${2:-../shared/profiles}" && pwd)
 step=${3:-1e-5}
 surface=${4:-planar}
+reference_point=${5:-deepest}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -41,6 +43,7 @@ $profile_lines
 [solver]
 mode = "$mode"
 surface = "$surface"
+reference_point = "$reference_point"
 [axes]
 lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = $step }
 $kind = $values
