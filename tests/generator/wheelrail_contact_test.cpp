@@ -31,17 +31,29 @@ std::string strip_file(const std::string& tag) {
   return ctab::test::shared_path("reference/contact/wheelrail/strips_" + tag + ".csv");
 }
 
+// CONTACT's summary row of a case (reference/contact/wheelrail/summary.csv).
+struct SummaryRow {
+  double cop_mm = 0.0, angle_rad = 0.0, area_mm2 = 0.0, pmax_MPa = 0.0;
+  bool found = false;
+};
+
+SummaryRow summary_row(double dy_mm) {
+  const auto summary = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
+  const auto dys = summary.numbers("dy_mm");
+  const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), dy_mm) - dys.begin());
+  if (row >= dys.size()) return {};
+  return {summary.numbers("y_cop_rail_mm")[row], summary.numbers("contact_angle_rad")[row],
+          summary.numbers("area_mm2")[row], summary.numbers("pmax_MPa")[row], true};
+}
+
 }  // namespace
 
 TEST_P(WheelRailContact, MatchesContact) {
   CTAB_REQUIRE_SHARED();
   const Case c = GetParam();
-  const auto summary = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
-  const auto dys = summary.numbers("dy_mm");
-  const std::size_t row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
-  ASSERT_LT(row, dys.size());
-  const double ref_cop = summary.numbers("y_cop_rail_mm")[row], ref_angle = summary.numbers("contact_angle_rad")[row];
-  const double ref_area = summary.numbers("area_mm2")[row], ref_pmax = summary.numbers("pmax_MPa")[row];
+  const SummaryRow ref = summary_row(c.dy_mm);
+  ASSERT_TRUE(ref.found);
+  const double ref_cop = ref.cop_mm, ref_angle = ref.angle_rad, ref_area = ref.area_mm2, ref_pmax = ref.pmax_MPa;
 
   const WheelContact contact = solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
                                                    LoadKind::NormalForce, 78.5e3, WheelRailOptions{});
@@ -90,12 +102,9 @@ TEST_P(WheelRailContact, MatchesContact) {
 TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRule) {
   CTAB_REQUIRE_SHARED();
   const Case c = GetParam();
-  const auto summary = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
-  const auto dys = summary.numbers("dy_mm");
-  const std::size_t row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
-  ASSERT_LT(row, dys.size());
-  const double ref_angle_deg = summary.numbers("contact_angle_rad")[row] * 180 / M_PI;
-  const double ref_area = summary.numbers("area_mm2")[row], ref_pmax = summary.numbers("pmax_MPa")[row];
+  const SummaryRow ref = summary_row(c.dy_mm);
+  ASSERT_TRUE(ref.found);
+  const double ref_angle_deg = ref.angle_rad * 180 / M_PI, ref_area = ref.area_mm2, ref_pmax = ref.pmax_MPa;
   WheelRailOptions options;
   options.reference_at_interpenetration_centre = true;
   const WheelContact contact = solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
