@@ -273,7 +273,7 @@ class PatchBuilder {
     out.h = state.n_rail - state.n_wheel;
     out.weight = 1.0 / (std::cos(angle) + w.slope * std::sin(angle));  // dn_wheel / dz
     // Along x the wheel (a surface of revolution about the lateral axis) rises vertically by x^2 / (2 r), r its radius
-    // at the point; along the normal that is seen as a vertical shift is, times dn_wheel/dz: A = weight / (2 r), or
+    // at the point; along the normal a vertical shift is seen times dn_wheel/dz (weight): A = weight / (2 r), or
     // cos(phi) / (2 r cos(delta - phi)) with phi the wheel's inclination there. Only where the wheel is parallel to
     // the plane is it cos(delta) / (2 r); taking that everywhere put the flange root's area 1.8 % under CONTACT's in
     // CONTACT's own plane (dy 6.5 mm, bem2d; the wheel's inclination spans about +-10 deg across that patch).
