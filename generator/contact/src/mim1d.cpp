@@ -641,6 +641,26 @@ bool Mim1dSolver::shift_warm_start(const std::vector<double>& dh_m, double load_
   return true;
 }
 
+void move_warm_start_origin(const Mim1dWarmStart& start, double origin_shift_m, double strip_width_m,
+                            Mim1dWarmStart& out) {
+  out.loads_N.clear();
+  out.depth_m = start.depth_m;
+  out.origin_y_m = start.origin_y_m;
+  out.origin_angle_rad = start.origin_angle_rad;
+  const double shift = origin_shift_m / strip_width_m;  // new strip k sits at the saved fractional index k + shift
+  if (start.empty() || !std::isfinite(shift) || std::abs(shift) > static_cast<double>(kMaxStripsPerPatch)) return;
+  const auto count = static_cast<long>(start.loads_N.size());
+  out.first_strip = static_cast<long>(std::floor(static_cast<double>(start.first_strip) - shift));
+  const long last = static_cast<long>(std::ceil(static_cast<double>(start.first_strip + count - 1) - shift));
+  auto saved = [&](long j) { return j >= 0 && j < count ? start.loads_N[static_cast<std::size_t>(j)] : 0.0; };
+  for (long k = out.first_strip; k <= last; ++k) {
+    const double j = static_cast<double>(k) + shift - static_cast<double>(start.first_strip);
+    const double j0 = std::floor(j), t = j - j0;
+    const auto i = static_cast<long>(j0);
+    out.loads_N.push_back((1.0 - t) * saved(i) + t * saved(i + 1));
+  }
+}
+
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   return solve_for_load(normal_force_N, Mim1dWarmStart{});
 }

@@ -180,4 +180,11 @@ class Mim1dSolver {
   std::vector<double> column_h_, column_q_;
 };
 
+//! Re-samples `start` onto the strip lattice of a grid whose y = 0 lies at y = origin_shift_m of the saved grid
+//! (strip centres (k + 1/2) strip_width_m in either frame): each new strip takes the saved loads linearly
+//! interpolated at its centre, so a start moves with the contact when the grid's origin moves (the wheel-rail
+//! reference point following the interpenetration centre). `out` receives the result (its storage is reused).
+void move_warm_start_origin(const Mim1dWarmStart& start, double origin_shift_m, double strip_width_m,
+                            Mim1dWarmStart& out);
+
 }  // namespace ctab::gen

@@ -38,6 +38,10 @@ struct Mim1dWarmStart {
   long first_strip = 0;         //!< strip index k of loads_N[0]
   std::vector<double> loads_N;  //!< strip loads N_k [N] (0 for strips out of contact); empty: no warm start
   double depth_m = 0.0;         //!< approach minus the deepest separation of the grid [m]
+  //! Where the saved grid's y = 0 lay, in the caller's terms (wheel-rail: the patch's reference point, rail y [m],
+  //! and its plane angle [rad]), so that the start can be moved onto a grid with another origin
+  //! (move_warm_start_origin). The solver does not read them.
+  double origin_y_m = 0.0, origin_angle_rad = 0.0;
   [[nodiscard]] bool empty() const noexcept { return loads_N.empty(); }
   void clear() noexcept { loads_N.clear(); }
 };

@@ -43,10 +43,11 @@ struct WheelRailOptions {
   //! Contact reference point (plane of the main patch): false = the deepest rigid point (the default, as the tables
   //! were validated); true = CONTACT's rule, the centre of the interpenetration region at the solved approach
   //! (weights pen^(5/2)), the plane inclined at the weighted mean of the rail's inclination over the region (a
-  //! region spanning tread and flange root is one plane, as CONTACT combines them). On the flange flank (rail arc
-  //! against the straight 70 deg wheel flank) the deepest point stays where the rail slope is -70 deg (-69.99 deg for
-  //! every dy 6.7-7.6 mm); the centre follows the patch (flange_reference_test). Off by default: it moves the
-  //! interpolated default table's flange force by up to 4.4 % at dy 6.33 mm (lookup_accuracy_test guard 3 %).
+  //! region spanning tread and flange root is one plane, as CONTACT combines them); it meets CONTACT's reference
+  //! angle within 0.012 deg (flange_reference_test). On the flange flank (rail arc against the straight 70 deg wheel
+  //! flank) the deepest point stays where the rail slope is -70 deg (-69.99 deg for every dy 6.7-7.6 mm, CONTACT
+  //! -68.6 to -69.4 deg); on a flat tread it sits up to 3 mm from the centre (0.6 deg at dy 0). Not yet the default
+  //! (README "Flange and flank": what switching it moves).
   bool reference_at_interpenetration_centre = false;
   //! Contact surface (config [solver] surface, CLI --surface): planar (the default) or conformal (CONTACT's
   //! conformal approach, D = 4; README "Flange and flank").
