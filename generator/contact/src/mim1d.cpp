@@ -647,6 +647,7 @@ void move_warm_start_origin(const Mim1dWarmStart& start, double origin_shift_m, 
   out.depth_m = start.depth_m;
   out.origin_y_m = start.origin_y_m;
   out.origin_angle_rad = start.origin_angle_rad;
+  out.sampling_approach_m = start.sampling_approach_m;
   const double shift = origin_shift_m / strip_width_m;  // new strip k sits at the saved fractional index k + shift
   if (start.empty() || !std::isfinite(shift) || std::abs(shift) > static_cast<double>(kMaxStripsPerPatch)) return;
   const auto count = static_cast<long>(start.loads_N.size());

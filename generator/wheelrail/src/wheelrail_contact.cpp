@@ -52,6 +52,11 @@ constexpr int kCentreSamples = 64;  // chosen: the centre moves < 0.1 um from 64
 constexpr double kFinestCentreStep_m = 1e-6;
 constexpr double kRecentreTolerance_m = 1e-6;
 constexpr int kRecentrePasses = 4;
+// The gap passes follow the centre for at most this many passes (then the plane stays, and recentre_main_patch
+// re-solves whole): where one region spans tread and flange root the centre moves by about 10 um per 0.2 um of
+// approach and following it alternates (90 max-iterations in the 0.01 mm sweep, built-in profiles, single wheel).
+// Chosen: planar cases settle in 2-4 passes.
+constexpr int kCentreFollowingPasses = 6;
 // Prescribed load: the gap is re-sampled at the solved vertical approach until it moves by less than 1 nm (1e-5 of
 // a typical 0.1 mm approach) and the vertical load balances to 1e-10 (issue 8: 1e-9; the warm-started strip solves
 // scatter by about 2e-11). Planar 2-4 passes (up to 9 where the flank and the root share a window), conformal
@@ -539,15 +544,23 @@ class WheelCase {
   // Prescribed normal or vertical load on the main patch (solve_main_patch); Converged also when the strip solve
   // failed (main.solution holds why), else InvalidInput or MaxIterations with detail_.
   SolveStatus solve_main_for_load(PatchProblem& main, double depth) {
-    // Start from the previous window's or reference point's solve, else from Hertz at the reference minimum.
-    const bool from_hertz = !(result_.vertical_approach_m > 0.0);
+    // Start from the previous window's or reference point's solve, else from Hertz at the reference minimum. With
+    // CONTACT's reference rule a chain's neighbour (warm start) gives the first sampling approach instead: the plane
+    // then starts at about the neighbour's centre, where its strip loads apply by index (from Hertz's estimate the
+    // centre lay elsewhere and a warm chain saved no iterations).
+    const double chained_x = options_.reference_at_interpenetration_centre && !options_.prescribed_reference &&
+                                     warm_ != nullptr && !warm_->empty()
+                                 ? warm_->sampling_approach_m
+                                 : 0.0;
+    const double start_x = result_.vertical_approach_m > 0.0 ? result_.vertical_approach_m : chained_x;
+    const bool from_hertz = !(start_x > 0.0);
     // The hertz rung is one ellipse from the curvatures at the rigid contact point (as practised in the field): its
     // gap stays sampled at first contact and the passes only balance the load. Re-sampled at the approach, its
     // deepest point (and the ellipse with it) jumped between passes next to the contact jumps: 60 passes without
     // settling at dy 5.205 and 6.675 mm (built-in profiles, single wheel, 78.5 kN).
     const bool fixed_sampling = options_.method == NormalMethod::Hertz;
     main.gap_dz = fixed_sampling ? 0.0
-                  : !from_hertz  ? result_.vertical_approach_m
+                  : !from_hertz  ? start_x
                                  : expected_approach(side_, main.reference, dy_, roll_, E_star_, load_, value_) /
                                       std::max(std::cos(main.reference.contact_angle_rad), kCosineFloor);
     double force = value_;
@@ -559,7 +572,7 @@ class WheelCase {
     double previous_angle = main.angle;
     int retries = 0;
     for (int pass = 0; pass < kGapPasses; ++pass) {
-      if (!fixed_sampling) follow_interpenetration_centre(main);
+      if (!fixed_sampling && pass < kCentreFollowingPasses) follow_interpenetration_centre(main);
       if (!build_main(main, depth)) return SolveStatus::InvalidInput;
       // A plane carries the vertical load exactly as F cos(angle): at the first pass, and whenever the plane followed
       // the interpenetration centre to a new angle.
@@ -719,7 +732,7 @@ class WheelCase {
   // sampling approach, so the passes settle the approach and the reference point together (one fixed point); before,
   // the whole load solve was repeated at each new centre (2.2x the CPU of the deepest point on the default table).
   void follow_interpenetration_centre(PatchProblem& main) const {
-    if (!options_.reference_at_interpenetration_centre || options_.prescribed_reference) return;
+    if (!options_.reference_at_interpenetration_centre || options_.prescribed_reference || recentring_) return;
     GapMinimum centre = ws_.minima[0];
     if (interpenetration_centre(centre, main.gap_dz)) main.reference = centre;
   }
@@ -739,7 +752,9 @@ class WheelCase {
       if (!interpenetration_centre(centre, result_.vertical_approach_m)) return SolveStatus::Converged;
       if (std::abs(centre.rail_y_m - ws_.pool[0].reference.rail_y_m) < kRecentreTolerance_m)
         return SolveStatus::Converged;
+      recentring_ = true;  // the plane stays at this centre through the re-solve's passes
       const SolveStatus status = solve_main_patch(depth, centre);
+      recentring_ = false;
       if (status != SolveStatus::Converged) return status;
     }
     return SolveStatus::Converged;
@@ -995,9 +1010,14 @@ class WheelCase {
   void save_warm_start(SolveStatus status) {
     if (warm_ == nullptr) return;
     const PatchProblem* main = ws_.used > 0 ? &ws_.pool[0] : nullptr;
-    if (is_success(status) && main != nullptr && main->solver && options_.method == NormalMethod::Mim1d)
+    if (is_success(status) && main != nullptr && main->solver && options_.method == NormalMethod::Mim1d) {
       main->solver->save_warm_start(main->solution, *warm_);
-    else warm_->clear();
+      warm_->origin_y_m = main->y0;
+      warm_->origin_angle_rad = main->angle;
+      warm_->sampling_approach_m = main->gap_dz;
+    } else {
+      warm_->clear();
+    }
   }
 
   WheelContact finish(SolveStatus status, std::string detail = {}) {
@@ -1018,7 +1038,8 @@ class WheelCase {
   double value_;
   const WheelRailOptions& options_;
   WheelContactWorkspace::Impl& ws_;
-  Mim1dWarmStart* warm_;  // in/out, or null: cold
+  Mim1dWarmStart* warm_;     // in/out, or null: cold
+  bool recentring_ = false;  // recentre_main_patch's re-solve: the gap passes keep its plane
   PatchBuilder builder_;
   WheelContact result_;
   std::string detail_;  // why the case failed (empty while it has not)

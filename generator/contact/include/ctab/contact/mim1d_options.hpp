@@ -40,8 +40,9 @@ struct Mim1dWarmStart {
   double depth_m = 0.0;         //!< approach minus the deepest separation of the grid [m]
   //! Where the saved grid's y = 0 lay, in the caller's terms (wheel-rail: the patch's reference point, rail y [m],
   //! and its plane angle [rad]), so that the start can be moved onto a grid with another origin
-  //! (move_warm_start_origin). The solver does not read them.
-  double origin_y_m = 0.0, origin_angle_rad = 0.0;
+  //! (move_warm_start_origin), and the caller's sampling approach of that grid (wheel-rail: the vertical approach
+  //! at which the gap was sampled [m]). The solver does not read them.
+  double origin_y_m = 0.0, origin_angle_rad = 0.0, sampling_approach_m = 0.0;
   [[nodiscard]] bool empty() const noexcept { return loads_N.empty(); }
   void clear() noexcept { loads_N.clear(); }
 };
