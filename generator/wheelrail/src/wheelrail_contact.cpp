@@ -767,7 +767,7 @@ class WheelCase {
   // rail's 13 mm arc turns the slope non-linearly across the region; at dy 5.5 mm, where the region spans tread and
   // flange root (CONTACT combines them into one patch), the centre's own inclination was 2.6 deg too shallow, and
   // keeping the deepest point instead 1.5 deg too steep. The weighted mean meets CONTACT's reference angle within
-  // 0.012 deg in all six planar cases. False when the region is narrower than three scan steps.
+  // 0.012 deg in all six planar cases. False when the region holds fewer than three samples at the finest step (1 um).
   bool interpenetration_centre(GapMinimum& point, double approach_m) const {
     // Samples at the rigid scan's step, refined until the region holds kCentreSamples (the sums are smooth
     // quadratures of pen^(5/2), which vanishes at the region's edges); a fixed 10 um step cost a third of the default
