@@ -85,8 +85,10 @@ TEST(Convergence, TwoPointContactAtTheBalancingLoadBuiltInProfiles) {
     const CaseSolution solved = solve_table_case(setup, dy_mm * 1e-3, 135.6e3);
     const WheelContact& right = solved.wheels[0].contact;
     EXPECT_EQ(right.status, SolveStatus::Converged) << "dy " << dy_mm << " mm: " << right.detail;
-    // Newton's rate again: measured 71 iterations over all gap passes with the term, 147 at dy 5.52 mm without.
-    EXPECT_LT(right.iterations, 110) << "dy " << dy_mm << " mm";
+    // Newton's rate again: measured 71 iterations over all gap passes with the term, 147 at dy 5.52 mm without;
+    // 28 since a gap pass starts from the previous pass although two basins interpenetrate (before, every pass
+    // started cold: 23-24 iterations each).
+    EXPECT_LT(right.iterations, 45) << "dy " << dy_mm << " mm";
   }
 }
 

@@ -3,6 +3,7 @@
 // start a perturbed solve closer to its solution and converge to the cold solve's result.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -116,4 +117,46 @@ TEST(Mim1dSensitivity, NoPredictionWithoutANewtonFactorisation) {
 
   Mim1dSolver unsolved(gap_plus(0.0), kEStar, {});  // no solve yet: nothing to predict from
   EXPECT_FALSE(unsolved.approach_sensitivity(strip_perturbation(unsolved, 1e-9)).has_value());
+}
+
+// Two interpenetrating basins (tread and flange root in one window): a neighbour's solution starts such a gap cold
+// (the discrete problem may hold more than one self-consistent set), an earlier solve of the same contact
+// (same_contact, the wheel-rail gap passes) warm, converging to the cold result in fewer iterations.
+TEST(Mim1dSensitivity, SameContactWarmStartAppliesWithTwoBasins) {
+  constexpr double kBasinOffset_m = 4e-3;  // the second basin's centre [m]
+  constexpr double kBasinLift_m = 5e-6;    // and how much shallower it is [m]
+  auto two_basins = [](double eps_m) {
+    auto h = [=](double y) {
+      const double u = y - kBasinOffset_m;
+      return std::min(8.0 * y * y, 30.0 * u * u + kBasinLift_m) + eps_m * perturbation_shape(y);
+    };
+    return sample_gap(
+        -0.01, 0.012, 0.05e-3, h, [](double) { return 2.0; },
+        [=](double y) { return 8.0 * y * y < 30.0 * (y - kBasinOffset_m) * (y - kBasinOffset_m) ? 8.0 : 30.0; },
+        "two basins");
+  };
+  constexpr double eps = 2e-7;
+  Mim1dSolver solver(two_basins(0.0), kEStar, {});
+  const NormalSolution base = solver.solve_for_load(kForce_N);
+  ASSERT_EQ(base.status, SolveStatus::Converged);
+  ASSERT_EQ(base.patches.size(), 2u);  // both basins carry load
+  Mim1dWarmStart neighbour, same;
+  solver.save_warm_start(base, neighbour);
+  same = neighbour;
+  same.same_contact = true;
+
+  Mim1dSolver cold(two_basins(eps), kEStar, {}), from_neighbour(two_basins(eps), kEStar, {}),
+      from_same(two_basins(eps), kEStar, {});
+  const NormalSolution reference = cold.solve_for_load(kForce_N);
+  const NormalSolution a = from_neighbour.solve_for_load(kForce_N, neighbour);
+  const NormalSolution b = from_same.solve_for_load(kForce_N, same);
+  ASSERT_EQ(reference.status, SolveStatus::Converged);
+  ASSERT_EQ(a.status, SolveStatus::Converged);
+  ASSERT_EQ(b.status, SolveStatus::Converged);
+  EXPECT_EQ(a.iterations, reference.iterations);  // started cold
+  EXPECT_LT(b.iterations, reference.iterations);
+  EXPECT_NEAR(b.approach_m, reference.approach_m, 1e-9 * reference.approach_m);
+  ASSERT_EQ(b.patches.size(), reference.patches.size());
+  for (std::size_t k = 0; k < b.patches.size(); ++k)
+    EXPECT_NEAR(b.patches[k].normal_force_N, reference.patches[k].normal_force_N, 1e-8 * kForce_N) << "patch " << k;
 }

@@ -702,6 +702,7 @@ class WheelCase {
       main.solver->save_warm_start(main.solution, ws_.pass_start);
       ws_.pass_start.origin_y_m = main.y0;
       ws_.pass_start.origin_angle_rad = main.angle;
+      ws_.pass_start.same_contact = true;
     }
     result_.iterations += main.solution.iterations;
     result_.matrix_entries += main.solution.matrix_entries;
@@ -1015,6 +1016,7 @@ class WheelCase {
       warm_->origin_y_m = main->y0;
       warm_->origin_angle_rad = main->angle;
       warm_->sampling_approach_m = main->gap_dz;
+      warm_->same_contact = false;  // the next shift's contact
     } else {
       warm_->clear();
     }

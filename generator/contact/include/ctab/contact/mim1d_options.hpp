@@ -43,6 +43,10 @@ struct Mim1dWarmStart {
   //! (move_warm_start_origin), and the caller's sampling approach of that grid (wheel-rail: the vertical approach
   //! at which the gap was sampled [m]). The solver does not read them.
   double origin_y_m = 0.0, origin_angle_rad = 0.0, sampling_approach_m = 0.0;
+  //! True when the start is an earlier solve of the same contact (wheel-rail: the previous gap pass of the case),
+  //! whose set the solve itself chose: it applies even where several basins of h interpenetrate. False (a
+  //! neighbour's solution): such a gap starts cold (Mim1dSolver::solve_for_load).
+  bool same_contact = false;
   [[nodiscard]] bool empty() const noexcept { return loads_N.empty(); }
   void clear() noexcept { loads_N.clear(); }
 };
