@@ -135,7 +135,8 @@ struct NormalLine {
 class PatchBuilder {
  public:
   PatchBuilder(const SideGeometry& side, double dy, double roll, double z_first, ContactSurface surface)
-      : side_(side), dy_(dy), roll_(roll), z_first_(z_first), surface_(surface) {}
+      : side_(side), dy_(dy), roll_(roll), cos_roll_(std::cos(roll)), sin_roll_(std::sin(roll)), z_first_(z_first),
+        surface_(surface) {}
   //! z_ws of first contact: the wheel is placed touching the rail.
   void set_first_contact_height(double z_first) { z_first_ = z_first; }
 
@@ -310,21 +311,28 @@ class PatchBuilder {
     return true;
   }
 
-  // Wheel: the same for the wheel surface; `w` is the last wheel point evaluated.
+  // Wheel (lowered by dz): Newton on its parameter S for the point on the line, g(S) = (P(S) - O) . t = 0 with t =
+  // (c, sn) the line's normal and O its origin; then n_wheel = (P - O) . (-sn, c). One wheel point per step (a
+  // Newton on n with a Newton on S inside for each wheel point took about three times as many: 11 % of the default
+  // table's instructions); `w` is the last wheel point evaluated.
   bool intersect_wheel(const NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
     for (int i = 0; i < kIntersectionSteps; ++i) {
-      const double y = line.y - state.n_wheel * line.sn;
-      if (!side_.rail().contains(y) || !side_.wheel().contains(state.s_guess)) return false;
-      w = wheel_at(y, state.s_guess, dz);
-      const double f = w.z_m - (line.z + state.n_wheel * line.c), df = -w.slope * line.sn - line.c;
-      state.n_wheel -= f / df;
-      if (std::abs(f) < kIntersectionTolerance_m) break;
+      if (!side_.wheel().contains(state.s_guess)) return false;
+      w = side_.wheel_point(state.s_guess, dy_, roll_);
+      w.z_m += z_first_ + dz;
+      if (!side_.rail().contains(w.rail_y_m)) return false;
+      const double along = (w.rail_y_m - line.y) * line.c + (w.z_m - line.z) * line.sn;
+      state.n_wheel = (w.z_m - line.z) * line.c - (w.rail_y_m - line.y) * line.sn;
+      if (std::abs(along) < kIntersectionTolerance_m) return true;
+      // S is the wheel profile's own lateral coordinate, rotated by the roll: d rail_y / dS = 1 / (cos(roll) +
+      // slope sin(roll)) and d z / dS = slope d rail_y / dS.
+      state.s_guess -= along * (cos_roll_ + w.slope * sin_roll_) / (line.c + w.slope * line.sn);
     }
     return side_.wheel().contains(state.s_guess);
   }
 
   const SideGeometry& side_;
-  double dy_, roll_, z_first_;
+  double dy_, roll_, cos_roll_, sin_roll_, z_first_;
   ContactSurface surface_;
 };
 
