@@ -151,7 +151,12 @@ void strip_compliances(const StripGrid& grid, double E_star_Pa, double approach_
   // Virtual interpenetration at half the approach, measured from the deepest point.
   const double h_min = *std::min_element(grid.h_m.begin(), grid.h_m.end());
   const double virtual_level = h_min + 0.5 * (approach_m - h_min);
-  for (std::size_t i = 0; i < n; ++i) weight[i] = std::max(0.0, virtual_level - grid.h_m[i]);
+  // Strips [weighted_begin, weighted_end) hold every positive weight: the sums skip the zeros outside (exactly).
+  std::size_t weighted_begin = n, weighted_end = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    weight[i] = std::max(0.0, virtual_level - grid.h_m[i]);
+    if (weight[i] > 0.0) weighted_begin = std::min(weighted_begin, i), weighted_end = i + 1;
+  }
   virtual_half_widths(grid, virtual_level, virtual_level - h_min, weight, run_half_width);
   double kernel_length = -1.0;
   std::size_t reach = 0;
@@ -174,7 +179,8 @@ void strip_compliances(const StripGrid& grid, double E_star_Pa, double approach_
     // contact, instead of switching to it when the last weight drops out of reach.
     const double local_weight = kLocalCurvatureWeight * (virtual_level - h_min);
     double sum_w = local_weight, sum_wb = local_weight * grid.B_per_m[k];
-    const std::size_t j_begin = k > reach ? k - reach : 0, j_end = std::min(n, k + reach + 1);
+    const std::size_t j_begin = std::max(k > reach ? k - reach : 0, weighted_begin),
+                      j_end = std::min(std::min(n, k + reach + 1), weighted_end);
     for (std::size_t j = j_begin; j < j_end; ++j) {
       const double w = weight[j] * kernel[j > k ? j - k : k - j];
       sum_w += w;
