@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "ctab/contact/error.hpp"
 #include "ctab/contact/hertz.hpp"
@@ -470,7 +471,8 @@ Mim1dSolver::IterationOutcome Mim1dSolver::iterate(InnerState& state, InnerResul
   if (newton && state.target_load_N) fill_approach_column(state.approach_m, state.h_min);
   else approach_column_ = ones_;
   double next_approach = state.approach_m;
-  if (!newton || !newton_step(state, force_mismatch, next_approach)) fixed_point_step(state, next_approach);
+  const bool fixed_point = !newton || std::exchange(state.fixed_point_first, false);
+  if (fixed_point || !newton_step(state, force_mismatch, next_approach)) fixed_point_step(state, next_approach);
   return take_step(state, next_approach) ? IterationOutcome::Continue : IterationOutcome::Failed;
 }
 
@@ -486,6 +488,9 @@ Mim1dSolver::InnerResult Mim1dSolver::solve_inner(double& approach_m, bool warm_
   (void)start_loads(approach_m, warm_start);
   checked_sets_.clear();
   InnerState state{approach_m, target_load_N, h_min};
+  // From ANALYN's estimate (a cold start) the first Newton step overshot at a patch edge and fell back to the
+  // fixed-point step in 123 of 536 cold solves of the default table, after its factorisation: take that step at once.
+  state.fixed_point_first = !warm_start;
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     result.iterations = iteration;
     const IterationOutcome outcome = iterate(state, result);

@@ -191,7 +191,21 @@ class PatchBuilder {
   void sample_side(PatchProblem& p, int direction, double depth, double step) const {
     SampleState state{0, 0, p.reference.wheel_s_m, {p.y0, p.z0, p.c, p.sn}, 0.0};
     if (surface_ == ContactSurface::Conformal && !centre_on_surface(p, state)) return;
+    // Planar samples are equally spaced: each Newton starts from the last two samples' solutions extrapolated
+    // (from the last one alone they took one step more).
+    double previous_n_rail = 0.0, previous_s = 0.0;
+    int taken = 0;
     for (int k = (direction < 0 ? 1 : 0);; ++k) {
+      if (surface_ == ContactSurface::Planar) {
+        const double n_rail = state.n_rail, s = state.s_guess;
+        if (taken >= 2) {
+          state.n_rail += n_rail - previous_n_rail;
+          state.s_guess += s - previous_s;
+        }
+        previous_n_rail = n_rail;
+        previous_s = s;
+        ++taken;
+      }
       Sample sample;
       const bool inside = surface_ == ContactSurface::Planar
                               ? planar_sample(p, direction * step * k, state, sample)

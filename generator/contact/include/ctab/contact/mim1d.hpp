@@ -97,7 +97,8 @@ class Mim1dSolver {
     int cycles = 0;  // times an active set came back to one already checked (cycle detection)
     double best_merit = std::numeric_limits<double>::infinity();  // lowest residual on this set (stall detection)
     int steps_without_progress = 0;
-    double damping = 1.0;  // fraction of the Newton/fixed-point step taken (1: full steps)
+    double damping = 1.0;            // fraction of the Newton/fixed-point step taken (1: full steps)
+    bool fixed_point_first = false;  // a cold start's first step is the paper's fixed-point step (solve_inner)
   };
   enum class SetCheck { Iterate, Check, CheckAndFinish };
   enum class IterationOutcome { Continue, Converged, Failed };
