@@ -15,7 +15,8 @@
 //! update the lengths; re-admit strips that interpenetrate after deformation; repeat. Two update rules:
 //!   FixedPoint - the paper's: solve G(a) N = delta - h with the lengths of the previous iterate;
 //!   Newton     - (default) Newton's method on the same equations, the Jacobian including dG/da da/dN;
-//!                a step that would make a load non-positive falls back to the fixed-point step.
+//!                a step that would make a load non-positive falls back to the fixed-point step, and a cold
+//!                start's first step is the fixed-point step.
 //! Prescribed load (Eqs. 6 and 15): delta becomes one more unknown of the same Newton iteration (bordered
 //! system, two back-substitutions with one factorisation). Should that fail, the paper's outer iteration
 //! takes over: a safeguarded Newton iteration on delta with slope dN/d(delta) = 1^T J^-1 1 from the last
