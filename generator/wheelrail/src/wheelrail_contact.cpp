@@ -140,15 +140,15 @@ class PatchBuilder {
   //! z_ws of first contact: the wheel is placed touching the rail.
   void set_first_contact_height(double z_first) { z_first_ = z_first; }
 
-  // Wheel surface (touching position, lowered by dz) at rail coordinate y: Newton on S.
-  WheelSurfacePoint wheel_at(double y, double& s_guess, double dz = 0.0) const {
+  // Wheel surface (touching position) at rail coordinate y: Newton on S.
+  WheelSurfacePoint wheel_at(double y, double& s_guess) const {
     WheelSurfacePoint w = side_.wheel_point(s_guess, dy_, roll_);
     for (int i = 0; i < kWheelPointSteps && std::abs(w.rail_y_m - y) > kWheelPointTolerance_m; ++i) {
-      const double dyds = std::cos(roll_) - side_.wheel().at(s_guess).dz * std::sin(roll_);
+      const double dyds = cos_roll_ - side_.wheel().at(s_guess).dz * sin_roll_;
       s_guess -= (w.rail_y_m - y) / dyds;
       w = side_.wheel_point(s_guess, dy_, roll_);
     }
-    w.z_m += z_first_ + dz;
+    w.z_m += z_first_;
     return w;
   }
 
