@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ctab/contact/mim1d.hpp"
 #include "ctab/contact/mim1d_options.hpp"
 #include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/table_config.hpp"
@@ -175,6 +176,73 @@ TEST(WarmStart, ChainNeedsFewerIterationsThanColdStarts) {
   std::printf("35 warm-startable cases: MIM-1D iterations warm %d, cold %d; solve time warm %.2f ms, cold %.2f ms\n",
               warm_iterations, cold_iterations, 1e3 * warm_s, 1e3 * cold_s);
   EXPECT_LT(warm_iterations, cold_iterations * 9 / 10);
+}
+
+// extrapolate_warm_start: the last two solves of an equally spaced chain extrapolated linearly, strip by strip.
+TEST(WarmStart, ExtrapolationIsLinearByStripIndex) {
+  Mim1dWarmStart start;
+  start.first_strip = 3;
+  start.loads_N = {0.0, 10.0, 20.0, 5.0};  // strips 3..6
+  start.depth_m = 50e-6;
+  start.sampling_approach_m = 80e-6;
+  start.origin_y_m = 0.01;
+  Mim1dWarmStart alone;
+  extrapolate_warm_start(start, alone);  // no earlier solve: the start itself
+  EXPECT_EQ(alone.loads_N, start.loads_N);
+  EXPECT_EQ(alone.depth_m, start.depth_m);
+  EXPECT_EQ(alone.sampling_approach_m, start.sampling_approach_m);
+  start.earlier.first_strip = 4;
+  start.earlier.loads_N = {8.0, 30.0, 4.0, 2.0};  // strips 4..7
+  start.earlier.depth_m = 49e-6;
+  start.earlier.sampling_approach_m = 79e-6;
+  start.same_contact = true;
+  Mim1dWarmStart next;
+  extrapolate_warm_start(start, next);
+  EXPECT_EQ(next.first_strip, 3);
+  ASSERT_EQ(next.loads_N.size(), 4u);
+  EXPECT_EQ(next.loads_N[0], 0.0);   // out of the last solve: stays out
+  EXPECT_EQ(next.loads_N[1], 12.0);  // 2 x 10 - 8
+  EXPECT_EQ(next.loads_N[2], 10.0);  // 2 x 20 - 30 = 10
+  EXPECT_EQ(next.loads_N[3], 6.0);   // 2 x 5 - 4
+  start.loads_N[2] = 14.0;           // 2 x 14 - 30 < 0: half the last load
+  extrapolate_warm_start(start, next);
+  EXPECT_EQ(next.loads_N[2], 7.0);
+  EXPECT_NEAR(next.depth_m, 51e-6, 1e-18);
+  EXPECT_NEAR(next.sampling_approach_m, 81e-6, 1e-18);
+  EXPECT_EQ(next.origin_y_m, 0.01);
+  EXPECT_FALSE(next.same_contact);  // a neighbour's start, never the same contact
+  EXPECT_TRUE(next.earlier.loads_N.empty());
+  start.earlier.depth_m = 120e-6;  // an extrapolated depth <= 0 keeps the last one
+  extrapolate_warm_start(start, next);
+  EXPECT_EQ(next.depth_m, start.depth_m);
+}
+
+// With CONTACT's reference rule the chain's first sampling approach comes from the neighbours: extrapolated from the
+// last two (with their strip loads) the 0.01 mm chains need fewer MIM-1D iterations than from the last one alone.
+TEST(WarmStart, ExtrapolatedChainNeedsFewerIterationsWithTheCentreRule) {
+  TableConfig config = fine_config(true);
+  config.reference_at_interpenetration_centre = true;
+  const SweepSetup setup = make_sweep_setup(config);
+  WheelContactWorkspace workspace;
+  int extrapolated = 0, last_only = 0;
+  for (const double start_m : {-0.5e-3, 1.0e-3, 3.0e-3}) {
+    Mim1dWarmStart two, one;
+    for (int step = 0; step < 8; ++step) {
+      const double dy = start_m + 1e-5 * step;
+      const CaseRoll roll = solve_case_roll(setup, dy);
+      one.earlier.loads_N.clear();  // the last solve alone
+      const CaseWheel a = solve_case_wheel(setup, 0, dy, roll, 78.5e3, workspace, &two);
+      const CaseWheel b = solve_case_wheel(setup, 0, dy, roll, 78.5e3, workspace, &one);
+      ASSERT_EQ(a.contact.status, SolveStatus::Converged) << "dy " << dy;
+      ASSERT_EQ(b.contact.status, SolveStatus::Converged) << "dy " << dy;
+      if (step < 2) continue;  // the first two of a chain have no earlier solve
+      extrapolated += a.contact.iterations;
+      last_only += b.contact.iterations;
+    }
+  }
+  std::printf("18 cases, CONTACT's rule: MIM-1D iterations extrapolated %d, last solve only %d\n", extrapolated,
+              last_only);
+  EXPECT_LT(extrapolated, last_only * 9 / 10);
 }
 
 TEST(WarmStart, SolveTableCaseReproducesWarmEntries) {

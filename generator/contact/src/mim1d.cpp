@@ -594,13 +594,13 @@ bool Mim1dSolver::load_warm_start(const Mim1dWarmStart& start, double& approach_
 }
 
 void Mim1dSolver::save_warm_start(const NormalSolution& solved, Mim1dWarmStart& out) const {
-  out.clear();
+  out.loads_N.clear();
   if (!is_success(solved.status) || active_.empty()) return;
   out.first_strip = first_strip_index() + static_cast<long>(active_.front());
   out.loads_N.assign(load_.begin() + static_cast<std::ptrdiff_t>(active_.front()),
                      load_.begin() + static_cast<std::ptrdiff_t>(active_.back() + 1));
   out.depth_m = solved.approach_m - *std::min_element(grid_.h_m.begin(), grid_.h_m.end());
-  if (!(out.depth_m > 0.0)) out.clear();
+  if (!(out.depth_m > 0.0)) out.loads_N.clear();
 }
 
 Eigen::VectorXd Mim1dSolver::active_gap_change(const std::vector<double>& dh_m) const {
@@ -670,6 +670,32 @@ void move_warm_start_origin(const Mim1dWarmStart& start, double origin_shift_m, 
     const auto i = static_cast<long>(j0);
     out.loads_N.push_back((1.0 - t) * saved(i) + t * saved(i + 1));
   }
+}
+
+void extrapolate_warm_start(const Mim1dWarmStart& start, Mim1dWarmStart& out) {
+  const Mim1dWarmStart::Earlier& earlier = start.earlier;
+  out.first_strip = start.first_strip;
+  out.loads_N = start.loads_N;
+  out.depth_m = start.depth_m;
+  out.origin_y_m = start.origin_y_m;
+  out.origin_angle_rad = start.origin_angle_rad;
+  out.sampling_approach_m = start.sampling_approach_m;
+  out.same_contact = false;
+  out.earlier.loads_N.clear();
+  if (start.empty() || earlier.loads_N.empty()) return;
+  const auto count = static_cast<long>(earlier.loads_N.size());
+  for (std::size_t i = 0; i < out.loads_N.size(); ++i) {
+    double& load = out.loads_N[i];
+    if (!(load > 0.0)) continue;
+    const long k = start.first_strip + static_cast<long>(i) - earlier.first_strip;  // index into the earlier loads
+    const double before = k >= 0 && k < count ? earlier.loads_N[static_cast<std::size_t>(k)] : 0.0;
+    const double predicted = 2.0 * load - before;
+    load = predicted > 0.0 ? predicted : kWarmStartShrink * load;
+  }
+  if (const double depth = 2.0 * start.depth_m - earlier.depth_m; depth > 0.0) out.depth_m = depth;
+  if (const double x = 2.0 * start.sampling_approach_m - earlier.sampling_approach_m;
+      x > 0.0 && earlier.sampling_approach_m > 0.0)
+    out.sampling_approach_m = x;
 }
 
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {

@@ -47,8 +47,27 @@ struct Mim1dWarmStart {
   //! whose set the solve itself chose: it applies even where several basins of h interpenetrate. False (a
   //! neighbour's solution): such a gap starts cold (Mim1dSolver::solve_for_load).
   bool same_contact = false;
+  //! The solve before this one in an equally spaced chain (wheel-rail: the lateral shift one step back; empty:
+  //! none), so that the next solve starts from the two extrapolated (extrapolate_warm_start). The solver does not
+  //! read it, and Mim1dSolver::save_warm_start leaves it alone.
+  struct Earlier {
+    long first_strip = 0;
+    std::vector<double> loads_N;  //!< [N]; empty: no earlier solve
+    double depth_m = 0.0, sampling_approach_m = 0.0;
+  } earlier;
   [[nodiscard]] bool empty() const noexcept { return loads_N.empty(); }
-  void clear() noexcept { loads_N.clear(); }
+  void clear() noexcept {
+    loads_N.clear();
+    earlier.loads_N.clear();
+  }
+  //! The current solve becomes the earlier one (its storage swapped, not copied); loads_N is left to be refilled.
+  void push_back_to_earlier() noexcept {
+    earlier.first_strip = first_strip;
+    earlier.loads_N.swap(loads_N);
+    earlier.depth_m = depth_m;
+    earlier.sampling_approach_m = sampling_approach_m;
+    loads_N.clear();
+  }
 };
 
 }  // namespace ctab::gen
