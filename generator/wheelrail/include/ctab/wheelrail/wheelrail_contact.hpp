@@ -110,7 +110,9 @@ class WheelContactWorkspace {
 //! lateral shift's solution of the same wheel and load; empty: cold), extrapolated with its earlier solve (the shift
 //! before it, at the same step: warm_start.earlier, extrapolate_warm_start), which is then replaced by this case's
 //! main patch (cleared when the case failed), ready for the next shift. The result agrees with the cold solve within
-//! the solver tolerance (Mim1dOptions::tolerance); it is a function of the inputs and `warm_start` alone.
+//! the solver tolerance (Mim1dOptions::tolerance), except where a two-point window holds two self-consistent strip
+//! sets and the chain stays on its neighbour's (README "Speed", warm start); it is a function of the inputs and
+//! `warm_start` alone.
 [[nodiscard]] WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
                                                LoadKind load, double load_value, const WheelRailOptions& options,
                                                WheelContactWorkspace& workspace, Mim1dWarmStart& warm_start);
