@@ -92,6 +92,8 @@ void Mim1dSolver::reset(const GapProfile& gap) {
   active_.reserve(n);
   column_h_.resize(n + 1);
   column_q_.resize(n + 1);
+  column_g_.resize(n + 1);
+  column_j_.resize(n + 1);
 }
 
 void Mim1dSolver::update_lengths() {
@@ -111,27 +113,24 @@ void Mim1dSolver::build_matrices(MatrixKind kind, bool with_displacement) {
   // One run of neighbouring strips (the usual case): row r is strip first + r, so entry (r, c) depends on |r - c|
   // alone and a column is two straight copies of its lag arrays.
   const bool contiguous = last - first + 1 == active_.size();
-  double* g_lag = column_h_.data();  // G_ij by lag k = |i - j| (overwrites H_k in place)
-  double* j_lag = column_q_.data();  // J_ij by lag
+  double* g_lag = column_g_.data();  // G_ij by lag k = |i - j|
+  double* j_lag = column_j_.data();  // J_ij by lag
+  const double* h_lag = column_h_.data();
+  const double* q_lag = column_q_.data();
+  const double half_scale = 0.5 * kernel_scale_;
   for (Eigen::Index c = 0; c < n; ++c) {
     const std::size_t j = active_[static_cast<std::size_t>(c)];
-    const double beta = b_ / length_[j];
     const std::size_t reach = std::max(j - first, last - j);
     // H_k = h((2k+1) b/a_j), Q_k = t h'(t) there; entries are differences of neighbours:
     // G = scale (H_k - H_{k-1}) (2 H_0 at k = 0), and d(G_ij N_j)/dN_j = G_ij + (a_j/2) dG_ij/da_j with
-    // dh(c/a)/da = -t h'(t)/a, so J = G - scale/2 (Q_k - Q_{k-1}).
-    const bool fast = StripKernel::in_table(beta) && StripKernel::in_table(static_cast<double>(2 * reach + 1) * beta);
-    double h_previous = 0.0, q_previous = 0.0;
-    for (std::size_t k = 0; k <= reach; ++k) {
-      const double t = static_cast<double>(2 * k + 1) * beta;
-      double h = 0.0, q = 0.0;
-      if (fast) kernel.value_and_scaled_slope_in_table(t, h, q);
-      else kernel.value_and_scaled_slope(t, h, q);
-      const double dh = k == 0 ? 2.0 * h : h - h_previous, dq = k == 0 ? 2.0 * q : q - q_previous;
-      h_previous = h;
-      q_previous = q;
-      g_lag[k] = kernel_scale_ * dh;
-      j_lag[k] = g_lag[k] - 0.5 * kernel_scale_ * dq;
+    // dh(c/a)/da = -t h'(t)/a, so J = G - scale/2 (Q_k - Q_{k-1}). The lookups first, then the differences (a
+    // loop the compiler vectorises).
+    kernel.at_odd_multiples(b_ / length_[j], reach + 1, column_h_.data(), column_q_.data());
+    g_lag[0] = kernel_scale_ * (2.0 * h_lag[0]);
+    j_lag[0] = g_lag[0] - half_scale * (2.0 * q_lag[0]);
+    for (std::size_t k = 1; k <= reach; ++k) {
+      g_lag[k] = kernel_scale_ * (h_lag[k] - h_lag[k - 1]);
+      j_lag[k] = g_lag[k] - half_scale * (q_lag[k] - q_lag[k - 1]);
     }
     const double load = with_displacement ? load_[j] : 0.0;
     double* column = influence_.col(c).data();

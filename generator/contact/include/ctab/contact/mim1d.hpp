@@ -179,7 +179,7 @@ class Mim1dSolver {
   Eigen::PartialPivLU<Eigen::MatrixXd> factorisation_;
   Eigen::VectorXd rhs_, active_loads_, ones_, residual_, next_loads_, slope_;  // the active system (scratch)
   Eigen::VectorXd approach_column_;  // -d R / d(delta) on the active set (fill_approach_column; 1 at fixed delta)
-  std::vector<double> column_h_, column_q_;
+  std::vector<double> column_h_, column_q_, column_g_, column_j_;
 };
 
 //! Re-samples `start` onto the strip lattice of a grid whose y = 0 lies at y = origin_shift_m of the saved grid

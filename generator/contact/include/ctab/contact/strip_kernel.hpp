@@ -45,6 +45,18 @@ class StripKernel {
     h = in.c0 + s * (in.c1 + s * (in.c2 + s * in.c3));
     t_dh = t * (in.c1 + s * (2.0 * in.c2 + s * 3.0 * in.c3)) * in.inverse_width;
   }
+  //! h and t h'(t) at t_k = (2k + 1) beta, k = 0 .. count - 1 (beta > 0): the lags of one column of MIM-1D's
+  //! influence matrix (Mim1dSolver::build_matrices).
+  void at_odd_multiples(double beta, std::size_t count, double* h, double* t_dh) const noexcept {
+    if (count == 0) return;
+    if (in_table(beta) && in_table(static_cast<double>(2 * count - 1) * beta)) {
+      for (std::size_t k = 0; k < count; ++k)
+        value_and_scaled_slope_in_table(static_cast<double>(2 * k + 1) * beta, h[k], t_dh[k]);
+      return;
+    }
+    for (std::size_t k = 0; k < count; ++k)
+      value_and_scaled_slope(static_cast<double>(2 * k + 1) * beta, h[k], t_dh[k]);
+  }
   //! True when value_and_scaled_slope_in_table may be used for t.
   [[nodiscard]] static bool in_table(double t) noexcept { return t >= kTableMin && t < kTableMax; }
 
