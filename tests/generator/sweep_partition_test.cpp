@@ -94,6 +94,24 @@ TEST(SweepUnits, EveryRowOnceAndMirrorClosed) {
   EXPECT_EQ(mirrored[2], (std::vector<std::size_t>{4}));
 }
 
+TEST(SweepUnits, LongSweepsTakeLongerUnits) {
+  // The default table (241 rows, mirrored: 121 on the half axis) keeps units of 8 rows, 16 units.
+  EXPECT_EQ(rows_per_unit(241, true), kRowsPerUnit);
+  EXPECT_EQ(sweep_units(241, true).size(), 16u);
+  // The 0.01 mm sweep (2401 rows, 1201 on the half axis): ceil(1201 / 48) = 26 rows, 47 units of whole chains.
+  EXPECT_EQ(rows_per_unit(2401, true), 26u);
+  const auto fine = sweep_units(2401, true);
+  EXPECT_EQ(fine.size(), 47u);
+  EXPECT_EQ(fine[0].size(), 52u);  // 26 rows and their mirrors
+  const std::vector<std::size_t> previous = warm_start_previous_rows(2401, true);
+  std::size_t cold = 0;
+  for (std::size_t i = 0; i < 2401; ++i) cold += previous[i] == kColdStart ? 1u : 0u;
+  EXPECT_EQ(cold, 2 * 47u - 1);  // one chain per half of every unit; the centre row's unit holds it once
+  // Never above kMaxRowsPerUnit, and the length depends on the axis alone.
+  EXPECT_EQ(rows_per_unit(1000000, false), kMaxRowsPerUnit);
+  EXPECT_EQ(rows_per_unit(385, false), 9u);
+}
+
 TEST(SweepUnits, ShardsAreDisjointContiguousRunsOfUnits) {
   const auto units = sweep_units(241, true);
   for (const std::size_t count : {1u, 2u, 3u, 7u, 16u, 40u}) {

@@ -59,7 +59,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 Mim1dSolver::Mim1dSolver(const GapProfile& gap, double E_star_Pa, const Mim1dOptions& options)
-    : E_star_Pa_(E_star_Pa), options_(options), tolerance_(options.tolerance) {
+    : E_star_Pa_(E_star_Pa), options_(options), tolerance_(options.tolerance), solve_tolerance_(options.tolerance) {
   if (!(std::isfinite(E_star_Pa) && E_star_Pa > 0.0))
     throw InputError("material", 0, "effective modulus must be positive and finite");
   if (!(options.tolerance > 0.0 && options.tolerance < 1e-2)) throw InputError("tolerance", 0, "must lie in (0, 0.01)");
@@ -444,6 +444,10 @@ Mim1dSolver::IterationOutcome Mim1dSolver::iterate(InnerState& state, InnerResul
   residual_ = displacement_ - rhs_;
   result.residual = residual_.cwiseAbs().maxCoeff() / depth;
   if (!std::isfinite(result.residual)) return IterationOutcome::Failed;
+  if (early_stop_)
+    tolerance_ = state.approach_m < early_stop_->approach_low_m || state.approach_m > early_stop_->approach_high_m
+                     ? early_stop_->tolerance
+                     : solve_tolerance_;
   const SetCheck check = check_active_set(state, result.residual, force_mismatch);
   if (check != SetCheck::Iterate) {
     state.set_checked = true;
@@ -705,6 +709,18 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWar
   tolerance_ = std::max(tolerance, options_.tolerance);
   NormalSolution solution = solve_for_load(normal_force_N, warm_start);
   tolerance_ = options_.tolerance;
+  return solution;
+}
+
+NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start, double tolerance,
+                                           const EarlyStop& early_stop) {
+  solve_tolerance_ = std::max(tolerance, options_.tolerance);
+  early_stop_ = early_stop;
+  early_stop_->tolerance = std::max(early_stop.tolerance, solve_tolerance_);
+  tolerance_ = solve_tolerance_;
+  NormalSolution solution = solve_for_load(normal_force_N, warm_start);
+  early_stop_.reset();
+  tolerance_ = solve_tolerance_ = options_.tolerance;
   return solution;
 }
 

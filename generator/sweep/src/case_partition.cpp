@@ -5,6 +5,15 @@
 
 namespace ctab::gen {
 
+std::size_t rows_per_unit(std::size_t n_dy, bool mirrored) {
+  const std::size_t span = mirrored ? (n_dy + 1) / 2 : n_dy;
+  return std::clamp((span + kTargetUnits - 1) / kTargetUnits, kRowsPerUnit, kMaxRowsPerUnit);
+}
+
+std::vector<std::vector<std::size_t>> sweep_units(std::size_t n_dy, bool mirrored) {
+  return sweep_units(n_dy, mirrored, rows_per_unit(n_dy, mirrored));
+}
+
 std::vector<std::vector<std::size_t>> sweep_units(std::size_t n_dy, bool mirrored, std::size_t rows_per_unit) {
   rows_per_unit = std::max<std::size_t>(rows_per_unit, 1);
   const std::size_t span = mirrored ? (n_dy + 1) / 2 : n_dy;  // rows counted from row 0

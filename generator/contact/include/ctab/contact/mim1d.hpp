@@ -58,6 +58,15 @@ class Mim1dSolver {
   //! The same to a looser relative tolerance (at least Mim1dOptions::tolerance) for loads, force and the Eq. 4
   //! check: for a solve that only predicts (the wheel-rail contact's first gap pass, whose gap is re-sampled).
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N, const Mim1dWarmStart& start, double tolerance);
+  //! Where a solve may stop early: while the approach lies outside [approach_low_m, approach_high_m], the looser
+  //! relative `tolerance` applies (a wheel-rail gap pass whose approach will not settle only predicts the next).
+  struct EarlyStop {
+    double approach_low_m = 0.0, approach_high_m = 0.0;  // normal approach [m]
+    double tolerance = 0.0;                              // relative tolerance outside the window [-]
+  };
+  //! The same to `tolerance`, or to early_stop.tolerance where the approach lies outside early_stop's window.
+  [[nodiscard]] NormalSolution solve_for_load(double normal_force_N, const Mim1dWarmStart& start, double tolerance,
+                                              const EarlyStop& early_stop);
   //! The solve that gave `solved` (the last one) as a warm start for a neighbouring gap; cleared unless it
   //! succeeded with contact.
   void save_warm_start(const NormalSolution& solved, Mim1dWarmStart& out) const;
@@ -158,11 +167,13 @@ class Mim1dSolver {
   StripGrid grid_;
   double E_star_Pa_;
   Mim1dOptions options_;
-  double tolerance_;             // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
-  double matrix_entries_ = 0.0;  // influence-matrix entries built so far (NormalSolution::matrix_entries)
-  double b_;                     // strip half-width [m]
-  double kernel_scale_;          // 2 / (pi^2 E* b) [m/N]
-  std::vector<StripHertz> compliance_;          // local Hertz data per strip (all strips)
+  double tolerance_;        // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
+  double solve_tolerance_;  // the solve's tolerance where early_stop_ does not apply
+  std::optional<EarlyStop> early_stop_;
+  double matrix_entries_ = 0.0;         // influence-matrix entries built so far (NormalSolution::matrix_entries)
+  double b_;                            // strip half-width [m]
+  double kernel_scale_;                 // 2 / (pi^2 E* b) [m/N]
+  std::vector<StripHertz> compliance_;  // local Hertz data per strip (all strips)
   std::vector<StripHertz> shifted_compliance_;  // compliance_ at a slightly larger approach (fill_approach_column)
   double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for
   std::vector<double> scratch_;
