@@ -220,7 +220,7 @@ int run_batch(const BatchOptions& o) {
         outcome.run = "resumed";
       } else {
         const InterruptCleanup cleanup(path);
-        write_table_checked(*table, path);
+        write_table_checked(*table, path, info.threads);
         count_statuses(*table, outcome);
         outcome.run = "generated";
       }

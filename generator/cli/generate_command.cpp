@@ -57,7 +57,7 @@ bool report_failed_cases(const std::map<int, std::size_t>& counts, const std::st
 int run_shard(const gen::TableConfig& config, const gen::GeneratorInfo& info, gen::ShardSpec spec,
               const GenerateOptions& o, const gen::ProgressCallback& progress) {
   const tables::Table shard = gen::generate_shard(config, info, spec, progress);
-  write_table_checked(shard, o.output);
+  write_table_checked(shard, o.output, info.threads);
   const std::vector<std::size_t> rows = *gen::parse_rows(shard.text_attributes.at("shard_rows"), shard.n_dy());
   std::map<int, std::size_t> counts;
   for (const std::size_t row : rows)
@@ -106,7 +106,7 @@ int run_generate_mpi(const MpiSession& session, const gen::TableConfig& config, 
   if (!table) return kExitSuccess;  // a worker: rank 0 writes the table and reports
   const double seconds = seconds_since(start);
   const InterruptCleanup cleanup(o.output);
-  write_table_checked(*table, o.output);
+  write_table_checked(*table, o.output, info.threads);
   return report_table(*table, o, seconds, info.threads, session.size());
 }
 #endif
@@ -137,7 +137,7 @@ int run_generate(const GenerateOptions& o) {
   if (!o.shard.empty()) return run_shard(config, info, shard, o, progress);
   const tables::Table table = gen::generate_table(config, info, progress);
   const double seconds = seconds_since(start);
-  write_table_checked(table, o.output);
+  write_table_checked(table, o.output, info.threads);
   return report_table(table, o, seconds, info.threads, 1);
 }
 

@@ -1,12 +1,17 @@
 #include "table_output.hpp"
 
+#include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdio>
+#include <functional>
 #include <utility>
 
 #include "exit_codes.hpp"
 #include "output_guard.hpp"
+#include "setup_options.hpp"
 
 namespace ctab::cli {
 
@@ -30,8 +35,17 @@ void ProgressReporter::operator()(std::size_t done, std::size_t total) {
   }
 }
 
-void write_table_checked(const tables::Table& table, const std::string& output) {
-  const tables::TableResult written = tables::write_table(table, output);
+tables::ParallelFor openmp_parallel_for(int threads) {
+  if (threads <= 0) threads = std::min(omp_get_max_threads(), kMaxThreads);
+  return [threads](std::size_t count, const std::function<void(std::size_t)>& task) {
+    const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (std::ptrdiff_t i = 0; i < n; ++i) task(static_cast<std::size_t>(i));
+  };
+}
+
+void write_table_checked(const tables::Table& table, const std::string& output, int threads) {
+  const tables::TableResult written = tables::write_table(table, output, openmp_parallel_for(threads));
   if (written.ok()) return;
   // The writer names its temporary file in some messages; the user gave OUTPUT, so messages name OUTPUT.
   std::string message = written.message;

@@ -23,7 +23,10 @@ class ProgressReporter {
 };
 
 //! Writes `table` to `output` atomically (tables::write_table: a temporary file renamed on success); a failure
-//! throws IoError naming OUTPUT (not the temporary file).
-void write_table_checked(const tables::Table& table, const std::string& output);
+//! throws IoError naming OUTPUT (not the temporary file). The chunks are compressed on `threads` OpenMP threads
+//! (0: OpenMP's default, at most kMaxThreads); the file's bytes do not depend on it.
+void write_table_checked(const tables::Table& table, const std::string& output, int threads = 0);
+//! tables::write_table's chunks on `threads` OpenMP threads (0: OpenMP's default, at most kMaxThreads).
+[[nodiscard]] tables::ParallelFor openmp_parallel_for(int threads);
 
 }  // namespace ctab::cli

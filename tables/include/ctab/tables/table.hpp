@@ -8,7 +8,9 @@
 //! Identity (tested on every case of a table): for the vertical-load axis, sum over a wheel's present patches of
 //! force_vertical_N equals the prescribed vertical load to 1e-9 relative; for the normal-load axis the sum of
 //! normal_force_N equals the prescribed normal load.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -145,9 +147,16 @@ inline constexpr std::int64_t kDefaultCompressionLevel = 1;
 //! The deflate level write_table uses for `table` (the attribute clamped to 0..9, or the default).
 [[nodiscard]] std::int64_t compression_level(const Table& table) noexcept;
 
+//! Runs task(0) ... task(count - 1), in any order and on any threads, and returns when all have run (the caller's
+//! thread pool: the generator passes an OpenMP loop; the tables library starts no threads of its own).
+using ParallelFor = std::function<void(std::size_t count, const std::function<void(std::size_t)>& task)>;
+
 //! Writes to `temporary_path(path)`, then renames onto `path`: an existing table is replaced only on success,
-//! and a failed or interrupted write never leaves a partial table under `path`.
-[[nodiscard]] TableResult write_table(const Table& table, const std::string& path);
+//! and a failed or interrupted write never leaves a partial table under `path`. Deflated datasets' chunks are
+//! shuffled and deflated by the writer (as HDF5's filters would) and stored in order (H5Dwrite_chunk); with
+//! `parallel_for` on its threads. The file's bytes are the same with or without it.
+[[nodiscard]] TableResult write_table(const Table& table, const std::string& path,
+                                      const ParallelFor& parallel_for = {});
 //! The temporary file write_table uses for `path` in this process: `path + ".tmp-<pid>"`.
 [[nodiscard]] std::string temporary_path(const std::string& path);
 //! Reads and validates a table: schema version, every dataset present with the right shape, axes, attributes
