@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ctab needs, only those that are missing.
 set -euo pipefail
-packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libhdf5-dev libgtest-dev googletest
+packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libgtest-dev googletest
           libbenchmark-dev libcli11-dev ccache libtomlplusplus-dev nlohmann-json3-dev
           python3-matplotlib python3-h5py openmpi-bin libopenmpi-dev)
 missing=()

@@ -54,7 +54,7 @@ bool write_chunks_in_parallel(hid_t dataset, const std::vector<hsize_t>& shape, 
   const detail::ChunkGrid grid(shape, chunk_shape(shape));
   std::vector<std::vector<unsigned char>> compressed(grid.count());
   std::vector<unsigned char> failed(grid.count(), 0);
-  parallel_for(grid.count(), [&](std::size_t index) {
+  const auto compress = [&](std::size_t index) {
     try {  // nothing may escape a task (an OpenMP loop would terminate)
       std::vector<unsigned char> chunk, scratch;
       grid.gather(static_cast<const unsigned char*>(data), element_size, index, chunk);
@@ -63,7 +63,10 @@ bool write_chunks_in_parallel(hid_t dataset, const std::vector<hsize_t>& shape, 
     } catch (...) {
       failed[index] = 1;
     }
-  });
+  };
+  // One chunk: here (waking the threads for it cost more than it saved: the default table's write 0.010 -> 0.021 s).
+  if (grid.count() == 1) compress(0);
+  else parallel_for(grid.count(), compress);
   if (std::find(failed.begin(), failed.end(), 1) != failed.end()) return false;
   for (std::size_t index = 0; index < grid.count(); ++index) {
     const std::vector<hsize_t> offset = grid.offset(index);

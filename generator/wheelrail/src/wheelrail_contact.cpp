@@ -233,7 +233,7 @@ class PatchBuilder {
     out.s = s;
     out.y_rail = line.y - state.n_rail * line.sn;
     out.angle = p.angle;
-    fill_strip_geometry(w, state, out);
+    fill_strip_geometry(w, state, line, out);
     return true;
   }
 
@@ -254,7 +254,7 @@ class PatchBuilder {
     state.line = line;
     out.y_rail = line.y;  // the surface point's rail y (CONTACT's y_rail of a row)
     out.angle = std::atan2(line.sn, line.c);
-    fill_strip_geometry(w, state, out);
+    fill_strip_geometry(w, state, line, out);
     return true;
   }
 
@@ -287,19 +287,22 @@ class PatchBuilder {
   }
 
   // Separation h (state.n_rail - state.n_wheel) along the line, A and B of the strip there (with the line's angle).
-  void fill_strip_geometry(const WheelSurfacePoint& w, const SampleState& state, Sample& out) const {
+  // `line` is the sample's normal (c, sn: cosine and sine of out.angle).
+  void fill_strip_geometry(const WheelSurfacePoint& w, const SampleState& state, const NormalLine& line,
+                           Sample& out) const {
     const ProfilePoint r = side_.rail().at(out.y_rail);
     // Lateral relative curvature seen along the line's lateral direction: each surface's n'' = kappa (1 + n'^2)^(3/2)
     // with n' its slope relative to the line's tangent. Planar, this is exactly h''/2 (the plane is straight);
     // conformal, n is an offset from the curved surface, whose own curvature kappa_m adds to both surfaces' n''
     // and cancels in h'' = n_rail'' - n_wheel'' (offset curves: kappa(offset) = kappa_m + n'' for small n), so the
     // relative curvature is the difference of the two profile curvatures, not h'' of a flat plane.
-    const double angle = out.angle;
-    const double tr = std::tan(std::atan(r.dz) - angle), tw = std::tan(std::atan(w.slope) - angle);
+    // Slope relative to the line's tangent: tan(atan(z') - angle) = (z' cos - sin) / (cos + z' sin).
+    const double tr = (r.dz * line.c - line.sn) / (line.c + r.dz * line.sn),
+                 tw = (w.slope * line.c - line.sn) / (line.c + w.slope * line.sn);
     const double gr = 1 + tr * tr, gw = 1 + tw * tw;
     out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
     out.h = state.n_rail - state.n_wheel;
-    out.weight = 1.0 / (std::cos(angle) + w.slope * std::sin(angle));  // dn_wheel / dz
+    out.weight = 1.0 / (line.c + w.slope * line.sn);  // dn_wheel / dz
     // Along x the wheel (a surface of revolution about the lateral axis) rises vertically by x^2 / (2 r), r its radius
     // at the point; along the normal a vertical shift is seen times dn_wheel/dz (weight): A = weight / (2 r), or
     // cos(phi) / (2 r cos(delta - phi)) with phi the wheel's inclination there. Only where the wheel is parallel to
