@@ -145,11 +145,11 @@ class PatchBuilder {
 
   // Wheel surface (touching position) at rail coordinate y: Newton on S.
   WheelSurfacePoint wheel_at(double y, double& s_guess) const {
-    WheelSurfacePoint w = side_.wheel_point(s_guess, dy_, roll_);
+    WheelSurfacePoint w = side_.wheel_point(s_guess, dy_, cos_roll_, sin_roll_);
     for (int i = 0; i < kWheelPointSteps && std::abs(w.rail_y_m - y) > kWheelPointTolerance_m; ++i) {
       const double dyds = cos_roll_ - side_.wheel().at(s_guess).dz * sin_roll_;
       s_guess -= (w.rail_y_m - y) / dyds;
-      w = side_.wheel_point(s_guess, dy_, roll_);
+      w = side_.wheel_point(s_guess, dy_, cos_roll_, sin_roll_);
     }
     w.z_m += z_first_;
     return w;
@@ -338,7 +338,7 @@ class PatchBuilder {
   bool intersect_wheel(const NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
     for (int i = 0; i < kIntersectionSteps; ++i) {
       if (!side_.wheel().contains(state.s_guess)) return false;
-      w = side_.wheel_point(state.s_guess, dy_, roll_);
+      w = side_.wheel_point(state.s_guess, dy_, cos_roll_, sin_roll_);
       w.z_m += z_first_ + dz;
       if (!side_.rail().contains(w.rail_y_m)) return false;
       const double along = (w.rail_y_m - line.y) * line.c + (w.z_m - line.z) * line.sn;

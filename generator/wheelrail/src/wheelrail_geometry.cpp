@@ -53,8 +53,11 @@ SideGeometry::SideGeometry(const ProfileTable& wheel, const ProfileTable& rail, 
 }
 
 WheelSurfacePoint SideGeometry::wheel_point(double s_m, double dy_m, double roll_rad) const noexcept {
+  return wheel_point(s_m, dy_m, std::cos(roll_rad), std::sin(roll_rad));
+}
+
+WheelSurfacePoint SideGeometry::wheel_point(double s_m, double dy_m, double c, double sn) const noexcept {
   const ProfilePoint f = wheel_->at(s_m);
-  const double c = std::cos(roll_rad), sn = std::sin(roll_rad);
   const double yl = wheel_origin_y_ + s_m, zl = track_.nominal_radius_m + f.z;
   WheelSurfacePoint p;
   p.rail_y_m = dy_m + yl * c - zl * sn - rail_origin_y_;

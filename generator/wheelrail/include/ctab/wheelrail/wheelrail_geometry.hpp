@@ -67,6 +67,8 @@ class SideGeometry {
   SideGeometry(const ProfileTable& wheel, const ProfileTable& rail, const TrackSetup& track);
 
   [[nodiscard]] WheelSurfacePoint wheel_point(double s_m, double dy_m, double roll_rad) const noexcept;
+  //! The same with the roll's cosine and sine given (a caller that evaluates many points at one roll).
+  [[nodiscard]] WheelSurfacePoint wheel_point(double s_m, double dy_m, double cos_roll, double sin_roll) const noexcept;
   //! Vertical gap at S for z_ws = 0 (so that min over S is the z_ws of first contact).
   [[nodiscard]] double gap(double s_m, double dy_m, double roll_rad) const noexcept {
     return gap_rotated(s_m, dy_m, std::cos(roll_rad), std::sin(roll_rad));
