@@ -1,7 +1,7 @@
 #pragma once
 //! `mpirun -n R ctab generate ...` (and `batch`): the sweep across MPI ranks (hybrid MPI x OpenMP), built with CTAB_WITH_MPI.
 //!
-//! Rank 0 hands out work units (case_partition.hpp: mirror-closed blocks of kRowsPerUnit lateral-shift rows)
+//! Rank 0 hands out work units (case_partition.hpp: mirror-closed blocks of rows_per_unit lateral-shift rows)
 //! dynamically: each worker holds up to kUnitsInFlight assigned units, sends every solved unit back as packed rows
 //! (table_rows.hpp) and gets the next one; rank 0 solves units too, on a second thread, while its main thread
 //! serves the messages (and alone calls MPI: MPI_THREAD_FUNNELED). Every rank solves with
