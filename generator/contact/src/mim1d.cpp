@@ -705,23 +705,36 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N) {
   return solve_for_load(normal_force_N, Mim1dWarmStart{});
 }
 
+// Restores the solver's own tolerance when a solve with a looser or an early-stopping one ends, also by an exception
+// (a workspace's solver outlives a case that throws).
+class Mim1dSolver::ToleranceScope {
+ public:
+  explicit ToleranceScope(Mim1dSolver& solver) : solver_(solver) {}
+  ToleranceScope(const ToleranceScope&) = delete;
+  ToleranceScope& operator=(const ToleranceScope&) = delete;
+  ~ToleranceScope() {
+    solver_.early_stop_.reset();
+    solver_.tolerance_ = solver_.solve_tolerance_ = solver_.options_.tolerance;
+  }
+
+ private:
+  Mim1dSolver& solver_;
+};
+
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start, double tolerance) {
+  const ToleranceScope scope(*this);
   tolerance_ = std::max(tolerance, options_.tolerance);
-  NormalSolution solution = solve_for_load(normal_force_N, warm_start);
-  tolerance_ = options_.tolerance;
-  return solution;
+  return solve_for_load(normal_force_N, warm_start);
 }
 
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start, double tolerance,
                                            const EarlyStop& early_stop) {
+  const ToleranceScope scope(*this);
   solve_tolerance_ = std::max(tolerance, options_.tolerance);
   early_stop_ = early_stop;
   early_stop_->tolerance = std::max(early_stop.tolerance, solve_tolerance_);
   tolerance_ = solve_tolerance_;
-  NormalSolution solution = solve_for_load(normal_force_N, warm_start);
-  early_stop_.reset();
-  tolerance_ = solve_tolerance_ = options_.tolerance;
-  return solution;
+  return solve_for_load(normal_force_N, warm_start);
 }
 
 NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWarmStart& warm_start) {

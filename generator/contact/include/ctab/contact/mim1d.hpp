@@ -167,6 +167,7 @@ class Mim1dSolver {
   StripGrid grid_;
   double E_star_Pa_;
   Mim1dOptions options_;
+  class ToleranceScope;     // restores tolerance_ and early_stop_ after a solve with its own tolerance
   double tolerance_;        // the current solve's relative tolerance (options_.tolerance, or looser for one solve)
   double solve_tolerance_;  // the solve's tolerance where early_stop_ does not apply
   std::optional<EarlyStop> early_stop_;
