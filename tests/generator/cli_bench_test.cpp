@@ -2,6 +2,8 @@
 // scripts/speed_vs_contact.py, which compares those figures with CONTACT's reference CPU times.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -33,8 +35,13 @@ struct ScriptRun {
 };
 
 // Runs scripts/speed_vs_contact.py with /usr/bin/python3 (the Debian interpreter the project uses).
+// Its output goes to files named after the test and the process: ctest runs this binary's tests as parallel
+// processes, and a shared name let one test read another's stderr (seen once in CI: an empty error message).
 ScriptRun run_script(const std::string& arguments) {
-  const std::string capture = ::testing::TempDir() + "speed_vs_contact";
+  static int calls = 0;
+  const std::string capture = ::testing::TempDir() + "speed_vs_contact_" +
+                              ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                              std::to_string(::getpid()) + "_" + std::to_string(++calls);
   const std::string command = "/usr/bin/python3 " CTAB_SOURCE_DIR "/scripts/speed_vs_contact.py " + arguments + " >" +
                               capture + ".out 2>" + capture + ".err";
   const int status = std::system(command.c_str());
