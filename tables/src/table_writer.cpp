@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include "ctab/tables/table.hpp"
 #include "chunk_deflate.hpp"
@@ -47,135 +48,220 @@ Handle dataset_properties(const std::vector<hsize_t>& shape, hsize_t count, std:
   return dcpl;
 }
 
-// The chunks of `data` shuffled and deflated on parallel_for's threads, then stored in row-major chunk order (the
-// order H5Dwrite allocates them in, so the file's bytes match its). False when zlib or HDF5 fails.
-bool write_chunks_in_parallel(hid_t dataset, const std::vector<hsize_t>& shape, std::size_t element_size,
-                              const void* data, std::int64_t level, const ParallelFor& parallel_for) {
-  const detail::ChunkGrid grid(shape, chunk_shape(shape));
-  std::vector<std::vector<unsigned char>> compressed(grid.count());
-  std::vector<unsigned char> failed(grid.count(), 0);
-  const auto compress = [&](std::size_t index) {
-    try {  // nothing may escape a task (an OpenMP loop would terminate)
-      std::vector<unsigned char> chunk, scratch;
-      grid.gather(static_cast<const unsigned char*>(data), element_size, index, chunk);
-      if (!detail::shuffle_and_deflate(chunk, element_size, static_cast<int>(level), scratch, compressed[index]))
-        failed[index] = 1;
-    } catch (...) {
-      failed[index] = 1;
-    }
-  };
-  // One chunk: here (waking the threads for it cost more than it saved: the default table's write 0.010 -> 0.021 s).
-  if (grid.count() == 1) compress(0);
-  else parallel_for(grid.count(), compress);
-  if (std::find(failed.begin(), failed.end(), 1) != failed.end()) return false;
-  for (std::size_t index = 0; index < grid.count(); ++index) {
-    const std::vector<hsize_t> offset = grid.offset(index);
-    if (H5Dwrite_chunk(dataset, H5P_DEFAULT, 0, offset.data(), compressed[index].size(), compressed[index].data()) < 0)
-      return false;
-  }
-  return true;
-}
+// One dataset of the file: shape, file and memory types, data, attributes. `direct` datasets store chunks
+// compressed outside the library (compress_chunk); the others go through H5Dwrite.
+struct DatasetWrite {
+  const char* path;
+  std::vector<hsize_t> shape;
+  hid_t file_type, memory_type;
+  const void* data;
+  const char* units;
+  const char* description;
+  const std::string* axis_name = nullptr;  // /axes/second's "name" attribute: its quantity
+  bool direct = false;
+  std::size_t element_size = 0;  // bytes of an element in the file
+  std::size_t first_chunk = 0;   // the position of its first chunk among all datasets' chunks
+};
 
-bool write_dataset(hid_t file, const char* path, const std::vector<hsize_t>& shape, hid_t file_type, hid_t memory_type,
-                   const void* data, const char* units, const char* description, std::int64_t level,
-                   const ParallelFor& parallel_for) {
+hsize_t element_count(const std::vector<hsize_t>& shape) {
   hsize_t count = 1;
   for (const hsize_t d : shape) count *= d;
-  const Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose);
-  const Handle dcpl = dataset_properties(shape, count, level);
-  const Handle dataset(H5Dcreate2(file, path, file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), H5Dclose);
-  if (!dataset.valid()) return false;
-  // Deflated datasets store their chunks directly (compressed here, on parallel_for's threads when given), so the
-  // file's bytes do not depend on whether or how the chunks were shared out. The chunks' bytes are the file type's:
-  // the memory layout must be it (little-endian hosts; else the library converts them, serially).
-  const bool direct = count > 0 && level > 0 && H5Tequal(file_type, memory_type) > 0;
-  static const ParallelFor serial = [](std::size_t n, const std::function<void(std::size_t)>& task) {
-    for (std::size_t i = 0; i < n; ++i) task(i);
-  };
-  const bool written =
-      count == 0 || (direct ? write_chunks_in_parallel(dataset.get(), shape, H5Tget_size(file_type), data, level,
-                                                       parallel_for ? parallel_for : serial)
-                            : H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0);
-  return written && detail::write_text_attribute(dataset.get(), "units", units) &&
-         detail::write_text_attribute(dataset.get(), "description", description);
+  return count;
 }
 
-TableResult write_arrays(hid_t file, const Table& const_table, const std::string& path,
-                         const ParallelFor& parallel_for) {
-  Table& table = const_cast<Table&>(const_table);  // schema_fields binds non-const members; nothing is modified
-  const Handle status_file(detail::make_case_status_type(), H5Tclose);
-  const Handle status_memory(detail::make_case_status_type(), H5Tclose);
-  for (const detail::Field& f : detail::schema_fields(table)) {
-    const std::vector<hsize_t> shape =
-        detail::shape_of(f.extent, table.n_dy(), table.n_second(), table.n_slots, table.strip_samples);
-    hsize_t count = 1;
-    for (const hsize_t d : shape) count *= d;
-    if (count != f.size()) return fail(path + ": " + f.path + ": size does not match its shape");
-    hid_t file_type = H5T_IEEE_F64LE, memory_type = H5T_NATIVE_DOUBLE;
-    if (f.element == detail::Element::Presence) file_type = H5T_STD_U8LE, memory_type = H5T_NATIVE_UINT8;
-    if (f.element == detail::Element::Int8) file_type = H5T_STD_I8LE, memory_type = H5T_NATIVE_INT8;
-    if (f.element == detail::Element::Status) file_type = status_file.get(), memory_type = status_memory.get();
-    const bool second = f.extent == detail::Extent::SecondAxis;
-    if (!write_dataset(file, f.path, shape, file_type, memory_type, f.data(),
-                       second ? table.second_axis_units.c_str() : f.units, f.description, compression_level(table),
-                       parallel_for))
-      return fail(path + ": cannot write " + f.path);
-    if (second) {
-      const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
-      if (!detail::write_text_attribute(dataset.get(), "name", table.second_axis_name))
-        return fail(path + ": cannot write the name of /axes/second");
+// Everything a table's file holds, planned before anything is written: its types, datasets and chunks.
+class FilePlan {
+ public:
+  FilePlan(const Table& table, std::int64_t level)
+      : table_(const_cast<Table&>(table)),  // schema_fields binds non-const members; nothing is modified
+        level_(level), status_type_(detail::make_case_status_type(), H5Tclose),
+        jump_kind_(detail::make_jump_kind_type(), H5Tclose),
+        jump_memory_(detail::make_jump_type(jump_kind_.get()), H5Tclose),
+        jump_file_(detail::make_jump_file_type(), H5Tclose) {}
+
+  // The datasets of the table (the schema's arrays, then /jumps) and their chunks; an error message, or "".
+  std::string plan() {
+    for (const detail::Field& f : detail::schema_fields(table_)) {
+      DatasetWrite write{
+          f.path,
+          detail::shape_of(f.extent, table_.n_dy(), table_.n_second(), table_.n_slots, table_.strip_samples),
+          H5T_IEEE_F64LE,
+          H5T_NATIVE_DOUBLE,
+          f.data(),
+          f.units,
+          f.description};
+      if (element_count(write.shape) != f.size()) return std::string(f.path) + ": size does not match its shape";
+      if (f.element == detail::Element::Presence) write.file_type = H5T_STD_U8LE, write.memory_type = H5T_NATIVE_UINT8;
+      if (f.element == detail::Element::Int8) write.file_type = H5T_STD_I8LE, write.memory_type = H5T_NATIVE_INT8;
+      if (f.element == detail::Element::Status) write.file_type = write.memory_type = status_type_.get();
+      if (f.extent == detail::Extent::SecondAxis) {
+        write.units = table_.second_axis_units.c_str();
+        write.axis_name = &table_.second_axis_name;
+      }
+      add(write);
     }
+    jump_rows_.reserve(table_.jumps.size());
+    for (const Jump& j : table_.jumps) {
+      if (j.i_dy + 1 >= table_.n_dy()) return "/jumps: i_dy out of range";
+      jump_rows_.push_back({j.i_second, j.wheel, j.slot, j.i_dy, table_.lateral_displacement_m[j.i_dy],
+                            table_.lateral_displacement_m[j.i_dy + 1], static_cast<std::uint8_t>(j.kind)});
+    }
+    add({detail::kJumpsPath,
+         {static_cast<hsize_t>(jump_rows_.size())},
+         jump_file_.get(),
+         jump_memory_.get(),
+         jump_rows_.data(),
+         "-",
+         "contact jumps: a slot appears, disappears or moves between dy_low_m and dy_high_m"});
+    compressed_.resize(chunks_.size());
+    return "";
   }
-  return {};
-}
 
-TableResult write_jumps(hid_t file, const Table& table, const std::string& path) {
-  std::vector<detail::JumpRecord> rows;
-  rows.reserve(table.jumps.size());
-  for (const Jump& j : table.jumps) {
-    if (j.i_dy + 1 >= table.n_dy()) return fail(path + ": /jumps: i_dy out of range");
-    rows.push_back({j.i_second, j.wheel, j.slot, j.i_dy, table.lateral_displacement_m[j.i_dy],
-                    table.lateral_displacement_m[j.i_dy + 1], static_cast<std::uint8_t>(j.kind)});
+  [[nodiscard]] std::size_t chunk_count() const noexcept { return chunks_.size(); }
+
+  // Shuffles and deflates chunk `index` (of all datasets' chunks); false when zlib fails. No HDF5 call: safe on any
+  // thread, beside create().
+  bool compress_chunk(std::size_t index) {
+    const DatasetWrite& write = writes_[chunks_[index].write];
+    std::vector<unsigned char> chunk, scratch;
+    grids_[chunks_[index].write]->gather(static_cast<const unsigned char*>(write.data), write.element_size,
+                                         chunks_[index].index, chunk);
+    return detail::shuffle_and_deflate(chunk, write.element_size, static_cast<int>(level_), scratch,
+                                       compressed_[index]);
   }
-  const Handle kind(detail::make_jump_kind_type(), H5Tclose);
-  const Handle memory(detail::make_jump_type(kind.get()), H5Tclose);
-  const Handle file_type(detail::make_jump_file_type(), H5Tclose);
-  if (!write_dataset(file, detail::kJumpsPath, {static_cast<hsize_t>(rows.size())}, file_type.get(), memory.get(),
-                     rows.data(), "-",
-                     "contact jumps: a slot appears, disappears or moves between dy_low_m and dy_high_m",
-                     compression_level(table), {}))
-    return fail(path + ": cannot write /jumps");
-  return {};
-}
 
-TableResult write_root_attributes(hid_t file, const Table& table, const std::string& path) {
-  const Handle root(H5Gopen2(file, "/", H5P_DEFAULT), H5Gclose);
-  bool ok =
-      detail::write_integer_attribute(root.get(), "schema_version", kSchemaVersion) &&
-      detail::write_integer_attribute(root.get(), "strip_samples", static_cast<std::int64_t>(table.strip_samples)) &&
-      detail::write_integer_attribute(root.get(), "n_slots", static_cast<std::int64_t>(table.n_slots)) &&
-      detail::write_text_attribute(root.get(), "second_axis_name", table.second_axis_name);
-  for (const auto& [name, value] : table.text_attributes)
-    ok = ok && detail::write_text_attribute(root.get(), name.c_str(), value);
-  for (const auto& [name, value] : table.number_attributes)
-    ok = ok && detail::write_number_attribute(root.get(), name.c_str(), value);
-  for (const auto& [name, value] : table.integer_attributes)
-    ok = ok && detail::write_integer_attribute(root.get(), name.c_str(), value);
-  return ok ? TableResult{} : fail(path + ": cannot write the root attributes (a provenance name used twice?)");
-}
+  // Creates the file's groups and datasets with their attributes, writes the datasets that are not direct and the
+  // root attributes; the direct datasets stay open for store_chunks. HDF5 on one thread at a time: the caller's
+  // threads meanwhile compress the chunks (a fixed order of HDF5 calls: the same bytes however they are shared out).
+  std::string create(hid_t file) {
+    const Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+    H5Pset_obj_track_times(gcpl.get(), false);
+    for (const char* group : detail::kGroups) {
+      const Handle g(H5Gcreate2(file, group, H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
+      if (!g.valid()) return std::string("cannot create group ") + group;
+    }
+    for (const DatasetWrite& write : writes_)
+      if (!create_dataset(file, write)) return std::string("cannot write ") + write.path;
+    if (!write_root_attributes(file)) return "cannot write the root attributes (a provenance name used twice?)";
+    return "";
+  }
 
+  // Stores the compressed chunks in row-major chunk order per dataset (the order H5Dwrite allocates them in).
+  std::string store_chunks() {
+    for (std::size_t w = 0; w < writes_.size(); ++w) {
+      if (!writes_[w].direct) continue;
+      for (std::size_t index = 0; index < grids_[w]->count(); ++index) {
+        const std::vector<hsize_t> offset = grids_[w]->offset(index);
+        const std::vector<unsigned char>& chunk = compressed_[writes_[w].first_chunk + index];
+        if (H5Dwrite_chunk(open_[w], H5P_DEFAULT, 0, offset.data(), chunk.size(), chunk.data()) < 0)
+          return std::string("cannot write ") + writes_[w].path;
+      }
+    }
+    return "";
+  }
+
+  ~FilePlan() {
+    for (const hid_t dataset : open_)
+      if (dataset >= 0) H5Dclose(dataset);
+  }
+  FilePlan(const FilePlan&) = delete;
+  FilePlan& operator=(const FilePlan&) = delete;
+
+ private:
+  struct Chunk {
+    std::size_t write, index;
+  };
+
+  // Deflated datasets store their chunks directly, so the file's bytes do not depend on whether or how the chunks
+  // were shared out. The chunks' bytes are the file type's: the memory layout must be it (little-endian hosts; else
+  // the library converts them, serially).
+  void add(DatasetWrite write) {
+    write.direct = element_count(write.shape) > 0 && level_ > 0 && H5Tequal(write.file_type, write.memory_type) > 0;
+    write.element_size = H5Tget_size(write.file_type);
+    write.first_chunk = chunks_.size();
+    grids_.emplace_back();
+    if (write.direct) {
+      grids_.back().emplace(write.shape, chunk_shape(write.shape));
+      for (std::size_t index = 0; index < grids_.back()->count(); ++index) chunks_.push_back({writes_.size(), index});
+    }
+    writes_.push_back(write);
+    open_.push_back(-1);
+  }
+
+  bool create_dataset(hid_t file, const DatasetWrite& write) {
+    const hsize_t count = element_count(write.shape);
+    const Handle space(H5Screate_simple(static_cast<int>(write.shape.size()), write.shape.data(), nullptr), H5Sclose);
+    const Handle dcpl = dataset_properties(write.shape, count, level_);
+    Handle dataset(H5Dcreate2(file, write.path, write.file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT),
+                   H5Dclose);
+    if (!dataset.valid()) return false;
+    if (!write.direct && count > 0 &&
+        H5Dwrite(dataset.get(), write.memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, write.data) < 0)
+      return false;
+    const bool attributes =
+        detail::write_text_attribute(dataset.get(), "units", write.units) &&
+        detail::write_text_attribute(dataset.get(), "description", write.description) &&
+        (write.axis_name == nullptr || detail::write_text_attribute(dataset.get(), "name", *write.axis_name));
+    if (attributes && write.direct) open_[static_cast<std::size_t>(&write - writes_.data())] = dataset.release();
+    return attributes;
+  }
+
+  bool write_root_attributes(hid_t file) const {
+    const Handle root(H5Gopen2(file, "/", H5P_DEFAULT), H5Gclose);
+    bool ok =
+        detail::write_integer_attribute(root.get(), "schema_version", kSchemaVersion) &&
+        detail::write_integer_attribute(root.get(), "strip_samples", static_cast<std::int64_t>(table_.strip_samples)) &&
+        detail::write_integer_attribute(root.get(), "n_slots", static_cast<std::int64_t>(table_.n_slots)) &&
+        detail::write_text_attribute(root.get(), "second_axis_name", table_.second_axis_name);
+    for (const auto& [name, value] : table_.text_attributes)
+      ok = ok && detail::write_text_attribute(root.get(), name.c_str(), value);
+    for (const auto& [name, value] : table_.number_attributes)
+      ok = ok && detail::write_number_attribute(root.get(), name.c_str(), value);
+    for (const auto& [name, value] : table_.integer_attributes)
+      ok = ok && detail::write_integer_attribute(root.get(), name.c_str(), value);
+    return ok;
+  }
+
+  Table& table_;
+  std::int64_t level_;
+  Handle status_type_, jump_kind_, jump_memory_, jump_file_;
+  std::vector<detail::JumpRecord> jump_rows_;
+  std::vector<DatasetWrite> writes_;
+  std::vector<std::optional<detail::ChunkGrid>> grids_;  // the direct datasets' chunk grids
+  std::vector<Chunk> chunks_;
+  std::vector<std::vector<unsigned char>> compressed_;
+  std::vector<hid_t> open_;  // the direct datasets, open between create and store_chunks
+};
+
+// Task 0 creates the file's structure (FilePlan::create, HDF5), tasks 1... compress one chunk each: one wake-up of
+// the caller's threads for the whole table, and the library's serial work beside the compression.
 TableResult write_file(const Table& table, const std::string& path, const ParallelFor& parallel_for) {
   const Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) return fail(path + ": cannot create file");
-  const Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
-  H5Pset_obj_track_times(gcpl.get(), false);
-  for (const char* group : detail::kGroups) {
-    const Handle g(H5Gcreate2(file.get(), group, H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
-    if (!g.valid()) return fail(path + ": cannot create group " + group);
-  }
-  if (TableResult r = write_arrays(file.get(), table, path, parallel_for); !r.ok()) return r;
-  for (const auto& step : {write_jumps, write_root_attributes})
-    if (TableResult r = step(file.get(), table, path); !r.ok()) return r;
+  FilePlan plan(table, compression_level(table));  // closes its datasets before `file` closes
+  if (const std::string error = plan.plan(); !error.empty()) return fail(path + ": " + error);
+  std::string create_error;
+  std::vector<unsigned char> failed(plan.chunk_count(), 0);
+  const auto task = [&](std::size_t index) {
+    try {  // nothing may escape a task (an OpenMP loop would terminate)
+      if (index == 0) {
+        detail::silence_hdf5_errors();  // per thread in a thread-safe HDF5 build
+        create_error = plan.create(file.get());
+      } else if (!plan.compress_chunk(index - 1)) {
+        failed[index - 1] = 1;
+      }
+    } catch (...) {
+      if (index == 0) create_error = "cannot create the datasets";
+      else failed[index - 1] = 1;
+    }
+  };
+  const std::size_t tasks = plan.chunk_count() + 1;
+  if (parallel_for) parallel_for(tasks, task);
+  else
+    for (std::size_t index = 0; index < tasks; ++index) task(index);
+  if (!create_error.empty()) return fail(path + ": " + create_error);
+  if (std::find(failed.begin(), failed.end(), 1) != failed.end()) return fail(path + ": cannot compress the datasets");
+  if (const std::string error = plan.store_chunks(); !error.empty()) return fail(path + ": " + error);
   if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) return fail(path + ": cannot flush");
   return {};
 }
