@@ -40,27 +40,32 @@ ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string
   dz_.resize(count);
   d2z_.resize(count);
   double t_lo = t0;
+  CurvePoint at_lo = first;  // the curve at t_lo: the previous sample's solution
   for (std::size_t k = 0; k < count; ++k) {
     const double y = y0_ + step_m * static_cast<double>(k);
     // Bracket [t_lo, t_hi] with y(t_lo) <= y <= y(t_hi): grow t_hi from the previous solution.
     double lo = t_lo, hi = t1;
     double t = lo;
+    CurvePoint p = at_lo;
+    bool at_t = true;  // p is the curve at t (not so after a last step too small to evaluate again)
     for (int iteration = 0; iteration < 100; ++iteration) {
-      const CurvePoint p = curve.at(t);
       const double f = p.y - y;
       if (std::abs(f) <= 1e-15) break;
       if (f < 0.0) lo = t;
       else hi = t;
       double next = (p.dy > 0.0) ? t - f / p.dy : 0.5 * (lo + hi);
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::abs(next - t) <= 1e-16 * (1.0 + std::abs(t))) {
-        t = next;
+      const bool step_too_small = std::abs(next - t) <= 1e-16 * (1.0 + std::abs(t));
+      t = next;
+      if (step_too_small) {
+        at_t = false;
         break;
       }
-      t = next;
+      p = curve.at(t);
     }
     t_lo = t;
-    const CurvePoint p = curve.at(t);
+    if (!at_t) p = curve.at(t);
+    at_lo = p;
     if (!(p.dy > 0.0))
       throw InputError(name_, 0, "profile is vertical or turns back near y = " + std::to_string(y * 1e3) + " mm");
     const double slope = p.dz / p.dy;
