@@ -133,7 +133,8 @@ int run_generate(const GenerateOptions& o) {
   const InterruptCleanup cleanup(o.output);
   const auto start = std::chrono::steady_clock::now();
   ProgressReporter reporter(o.quiet, "ctab generate");
-  const auto progress = [&](std::size_t d, std::size_t t) { reporter(d, t); };
+  gen::ProgressCallback progress;  // none when quiet: no reporter thread
+  if (!o.quiet) progress = [&](std::size_t d, std::size_t t) { reporter(d, t); };
   if (!o.shard.empty()) return run_shard(config, info, shard, o, progress);
   const tables::Table table = gen::generate_table(config, info, progress);
   const double seconds = seconds_since(start);

@@ -274,6 +274,11 @@ std::int64_t compression_level(const Table& table) noexcept {
   return std::clamp(found->second, kMinCompressionLevel, kMaxCompressionLevel);
 }
 
+void start_hdf5() noexcept {
+  detail::silence_hdf5_errors();
+  H5open();
+}
+
 std::string temporary_path(const std::string& path) { return path + ".tmp-" + std::to_string(::getpid()); }
 
 TableResult write_table(const Table& table, const std::string& path, const ParallelFor& parallel_for) {

@@ -10,6 +10,7 @@
 #include <ctime>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -360,31 +361,40 @@ SweepPlan make_plan(const TableConfig& config, const GeneratorInfo& info) {
   return plan;
 }
 
-// Runs `work` on a worker thread while this thread reports progress every 0.1 s (no I/O in the parallel region).
+// Runs `work` on this thread, whose OpenMP threads (started once, start_openmp_threads) also serve the table's write,
+// while a reporter thread calls `progress` every 0.1 s (no I/O in the parallel region); no reporter without
+// `progress`.
 void run_with_progress(const std::function<void()>& work, const std::atomic<std::size_t>& done, std::size_t total,
                        const ProgressCallback& progress) {
+  if (!progress) return work();
   std::mutex mutex;
   std::condition_variable finished_signal;
   bool finished = false;
-  std::thread worker([&] {
-    work();
-    const std::lock_guard<std::mutex> lock(mutex);
-    finished = true;
-    finished_signal.notify_one();
-  });
-  {
+  std::thread reporter([&] {
     std::unique_lock<std::mutex> lock(mutex);
     while (!finished) {
-      if (progress) {
-        lock.unlock();
-        progress(done.load(std::memory_order_relaxed), total);
-        lock.lock();
-      }
+      lock.unlock();
+      progress(done.load(std::memory_order_relaxed), total);
+      lock.lock();
       finished_signal.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; });
     }
+  });
+  const auto stop_reporter = [&] {
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      finished = true;
+    }
+    finished_signal.notify_one();
+    reporter.join();
+  };
+  try {
+    work();
+  } catch (...) {
+    stop_reporter();
+    throw;
   }
-  worker.join();
-  if (progress) progress(total, total);
+  stop_reporter();
+  progress(total, total);
 }
 
 // For each of `rows` (lateral-shift indices), the position in `rows` of the row whose roll it mirrors, or
@@ -661,8 +671,42 @@ void TableSweep::finish(tables::Table& table) const {
   add_provenance(table, impl_->config, impl_->setup, impl_->plan, impl_->info);
 }
 
+namespace {
+
+// The first parallel region of a thread creates its OpenMP threads and waits until every one of them runs: on a
+// loaded or virtual machine that took 1 to 4 ms (the scheduler's tick), with every thread of the team idle. So the
+// calling thread starts its team (and the HDF5 library) while a helper thread loads the profiles and builds the
+// set-up; the sweep and the table's write then run on the started team. Without threads to start, the set-up runs
+// here.
+TableSweep make_sweep_starting_threads(const TableConfig& config, const GeneratorInfo& info) {
+  if (info.threads <= 1) return TableSweep(config, info);
+  std::optional<TableSweep> sweep;
+  std::exception_ptr error;
+  std::thread setup([&] {
+    try {
+      sweep.emplace(config, info);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  });
+  start_openmp_threads(info.threads);
+  tables::start_hdf5();  // for the write, here rather than after the sweep (the set-up never calls HDF5)
+  setup.join();
+  if (error) std::rethrow_exception(error);
+  return std::move(*sweep);
+}
+
+}  // namespace
+
+void start_openmp_threads(int threads) noexcept {
+  if (threads <= 1) return;
+  std::atomic<int> started{0};  // a region with a body: GCC drops an empty one
+#pragma omp parallel num_threads(threads)
+  started.fetch_add(1, std::memory_order_relaxed);
+}
+
 tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info, const ProgressCallback& progress) {
-  const TableSweep sweep(config, info);
+  const TableSweep sweep = make_sweep_starting_threads(config, info);
   std::vector<std::size_t> rows(sweep.n_dy());
   for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
   tables::Table table = sweep.empty_table();

@@ -157,6 +157,9 @@ using ParallelFor = std::function<void(std::size_t count, const std::function<vo
 //! `parallel_for` on its threads. The file's bytes are the same with or without it.
 [[nodiscard]] TableResult write_table(const Table& table, const std::string& path,
                                       const ParallelFor& parallel_for = {});
+//! Starts the HDF5 library (once per process; its first call would otherwise, 0.3-0.4 ms), for a caller that can
+//! overlap it with other set-up work. Not beside another thread's call into HDF5 (the library is not thread-safe).
+void start_hdf5() noexcept;
 //! The temporary file write_table uses for `path` in this process: `path + ".tmp-<pid>"`.
 [[nodiscard]] std::string temporary_path(const std::string& path);
 //! Reads and validates a table: schema version, every dataset present with the right shape, axes, attributes

@@ -173,9 +173,15 @@ class TableSweep {
   std::unique_ptr<Impl> impl_;
 };
 
-//! Generates the table. Throws InputError at set-up (e.g. a profile file that cannot be read).
+//! Generates the table. Throws InputError at set-up (e.g. a profile file that cannot be read). The sweep runs on the
+//! calling thread's OpenMP team (GeneratorInfo::threads), started beside the set-up; a caller that writes the table
+//! with openmp_parallel_for afterwards reuses that team.
 [[nodiscard]] tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info,
                                            const ProgressCallback& progress = {});
+
+//! Starts the calling thread's OpenMP team of `threads` (an empty parallel region; nothing for 1): a team's first
+//! region waits until every thread runs, which later regions of the same thread do not.
+void start_openmp_threads(int threads) noexcept;
 
 //! Equivalent ellipse of a patch (Kik-Piotrowski recipe: area and length/width ratio kept):
 //! a = sqrt(area/pi) sqrt(L/W), b = sqrt(area/pi) sqrt(W/L) [m].
