@@ -34,6 +34,22 @@ TEST(Cli, HelpListsSubcommands) {
     EXPECT_NE(run.output.find(name), std::string::npos) << name;
 }
 
+// main registers only the subcommand the command line names (by a table of names): each name must be its
+// subcommand's, and the full help must list every one.
+TEST(Cli, EverySubcommandByItsName) {
+  const std::string help = run_ctab("--help").output;
+  for (const char* name : {"generate", "inspect", "solve", "paper-cases", "geometry", "bench", "config", "export",
+                           "query", "merge", "batch"}) {
+    const Combined run = run_ctab(std::string(name) + " --help");
+    EXPECT_EQ(run.exit_code, 0) << name << ": " << run.output;
+    EXPECT_NE(run.output.find(std::string("ctab ") + name), std::string::npos) << name << ": " << run.output;
+    EXPECT_NE(help.find(name), std::string::npos) << name;
+  }
+  const Combined misspelt = run_ctab("generat");  // all registered: CLI11's own usage error
+  EXPECT_EQ(misspelt.exit_code, 2);
+  EXPECT_NE(misspelt.output.find("subcommand"), std::string::npos) << misspelt.output;
+}
+
 TEST(Cli, SolveJson) {
   const Combined run = run_ctab("solve --gap " + kSphere + " --load 963e3 --json");
   ASSERT_EQ(run.exit_code, 0) << run.output;
