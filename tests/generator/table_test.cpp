@@ -164,6 +164,10 @@ TEST(Table, BitIdenticalForOneAndTwoThreads) {
   EXPECT_TRUE(bytes_a == bytes_b);
 }
 
+// Five threads on this table's one roll run: four of them take wheel tasks at once and wait for its rolls
+// (generate_table's single region); more threads than cores here, so the waits yield to the solving thread.
+TEST(Table, SameDataWhenWheelTasksWaitForTheirRolls) { expect_same_data(small_table(1), small_table(5)); }
+
 TEST(Table, MalformedFilesAreRejectedClearly) {
   const std::string good = temp_path("good.h5");
   ASSERT_TRUE(ctab::tables::write_table(small_table(2), good).ok());

@@ -443,29 +443,19 @@ const RollGuess* next_roll_guess(const std::vector<CaseRoll>& rolls, const std::
   return &guess;
 }
 
-// The rolls of `rows`: those with a source row mirror it (a failed source is solved directly, so that its detail
-// names its own dy).
-void solve_rolls(const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
-                 std::vector<CaseRoll>& rolls) {
-  const std::vector<std::size_t> source = roll_sources(setup, plan, rows);
-  std::vector<std::size_t> solved;
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    if (source[k] == kSolveRoll) solved.push_back(k);
-  std::sort(solved.begin(), solved.end(), [&](std::size_t a, std::size_t b) { return rows[a] < rows[b]; });
-  const std::vector<std::vector<std::size_t>> runs = roll_runs(rows, solved);
-  // schedule(dynamic): the roll iteration costs more where the contact jumps.
-#pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    RollGuess guess;
-    for (std::size_t j = 0; j < runs[r].size(); ++j) {
-      const std::size_t k = runs[r][j];
-      rolls[k] = solve_case_roll(setup, plan.dy_m[rows[k]], next_roll_guess(rolls, runs[r], j, guess));
-    }
-  }
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    if (source[k] == kSolveRoll) continue;
-    const CaseRoll& mirror = rolls[source[k]];
-    rolls[k] = mirror.converged ? CaseRoll{-mirror.roll_rad, true, ""} : solve_case_roll(setup, plan.dy_m[rows[k]]);
+// The rolls of one run (positions in `rows`, consecutive rows), each after the first searched from its
+// predecessors'; then the rolls that mirror them (`mirrors`: for each position, the positions whose source it is),
+// a failed source's mirror solved directly, so that its detail names its own dy.
+void solve_roll_run(const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
+                    const std::vector<std::size_t>& run, const std::vector<std::vector<std::size_t>>& mirrors,
+                    std::vector<CaseRoll>& rolls) {
+  RollGuess guess;
+  for (std::size_t j = 0; j < run.size(); ++j) {
+    const std::size_t k = run[j];
+    rolls[k] = solve_case_roll(setup, plan.dy_m[rows[k]], next_roll_guess(rolls, run, j, guess));
+    for (const std::size_t m : mirrors[k])
+      rolls[m] =
+          rolls[k].converged ? CaseRoll{-rolls[k].roll_rad, true, ""} : solve_case_roll(setup, plan.dy_m[rows[m]]);
   }
 }
 
@@ -491,34 +481,78 @@ std::vector<std::vector<std::size_t>> warm_start_chains(const SweepSetup& setup,
   return chains;
 }
 
-// Rolls (one per selected lateral shift) then every solved wheel of every selected case, each task one warm-start
-// chain of one side and one load, writing only its own slots. `rows` are lateral-shift indices; results are
-// indexed (side, k, i_second) with k the position in `rows`, rolls by k. A case's solve depends on nothing but its
-// own inputs and its chain, so any subset of whole chains gives the same values at any thread count.
+// The order the chains are solved in: by the smallest |dy| of their rows, so that the first chains need the rolls
+// of the first roll runs (those of the smallest |dy| >= 0, and their mirrors), and the dearer flange chains come
+// before the last, cheap ones far out.
+std::vector<std::size_t> chain_order(const SweepPlan& plan, const std::vector<std::size_t>& rows,
+                                     const std::vector<std::vector<std::size_t>>& chains) {
+  std::vector<double> nearest(chains.size());
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    nearest[c] = std::abs(plan.dy_m[rows[chains[c].front()]]);
+    for (const std::size_t k : chains[c]) nearest[c] = std::min(nearest[c], std::abs(plan.dy_m[rows[k]]));
+  }
+  std::vector<std::size_t> order(chains.size());
+  for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nearest[a] < nearest[b]; });
+  return order;
+}
+
+// Rolls (one per selected lateral shift) and every solved wheel of every selected case, in one parallel region:
+// items are handed out in order from one counter, first the roll runs, then the wheel tasks (one warm-start chain
+// of one side and one load each, writing only its own slots). A wheel task waits for its rows' rolls, which are
+// then either done or being solved by a thread that waits for nothing (every roll run was handed out before any
+// wheel task), so the region cannot stall; no barrier between the rolls and the solves. `rows` are lateral-shift
+// indices; results are indexed (side, k, i_second) with k the position in `rows`, rolls by k. A case's solve
+// depends on nothing but its own inputs and its chain, so any subset of whole chains gives the same values at any
+// thread count, in any order.
 std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, const std::vector<std::size_t>& rows,
                              std::vector<CaseRoll>& rolls, const ProgressCallback& progress) {
   const std::size_t n_rows = rows.size(), n_second = plan.load_values.size(), row_cases = n_rows * n_second;
   const std::size_t total = row_cases * plan.sides;
   const std::vector<std::vector<std::size_t>> chains = warm_start_chains(setup, plan, rows);
+  const std::vector<std::size_t> order = chain_order(plan, rows, chains);
   const std::size_t side_tasks = chains.size() * n_second, tasks = side_tasks * plan.sides;
+  // The roll runs and, for each solved roll, the rows that mirror it.
+  const std::vector<std::size_t> source = roll_sources(setup, plan, rows);
+  std::vector<std::size_t> solved;
+  std::vector<std::vector<std::size_t>> mirrors(n_rows);
+  for (std::size_t k = 0; k < n_rows; ++k) {
+    if (source[k] == kSolveRoll) solved.push_back(k);
+    else mirrors[source[k]].push_back(k);
+  }
+  std::sort(solved.begin(), solved.end(), [&](std::size_t a, std::size_t b) { return rows[a] < rows[b]; });
+  const std::vector<std::vector<std::size_t>> runs = roll_runs(rows, solved);
+  std::vector<std::atomic<bool>> roll_ready(n_rows);
+  for (auto& ready : roll_ready) ready.store(false, std::memory_order_relaxed);
   rolls = std::vector<CaseRoll>(n_rows);
   std::vector<CaseWheel> results(total);
   std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(plan.threads));  // one per thread
-  std::atomic<std::size_t> done{0};
+  std::atomic<std::size_t> done{0}, next_item{0};
+  const std::size_t items = runs.size() + tasks;
   auto work = [&] {
-    solve_rolls(setup, plan, rows, rolls);
-    // schedule(dynamic): flange cases cost several times tread cases.
-#pragma omp parallel for schedule(dynamic, 1) num_threads(plan.threads)
-    for (std::size_t task = 0; task < tasks; ++task) {
-      const std::size_t side = task / side_tasks, rest = task % side_tasks;
-      const std::vector<std::size_t>& chain = chains[rest / n_second];
-      const std::size_t i_second = rest % n_second;
+#pragma omp parallel num_threads(plan.threads)
+    {
       WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
-      Mim1dWarmStart warm;  // the chain's first row starts cold
-      for (const std::size_t k : chain) {
-        results[side * row_cases + k * n_second + i_second] =
-            solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace, &warm);
-        done.fetch_add(1, std::memory_order_relaxed);
+      for (std::size_t item = next_item.fetch_add(1); item < items; item = next_item.fetch_add(1)) {
+        if (item < runs.size()) {
+          const std::vector<std::size_t>& run = runs[item];
+          solve_roll_run(setup, plan, rows, run, mirrors, rolls);
+          for (const std::size_t k : run) {
+            roll_ready[k].store(true, std::memory_order_release);
+            for (const std::size_t m : mirrors[k]) roll_ready[m].store(true, std::memory_order_release);
+          }
+          continue;
+        }
+        const std::size_t task = item - runs.size(), side = task / side_tasks, rest = task % side_tasks;
+        const std::vector<std::size_t>& chain = chains[order[rest / n_second]];
+        const std::size_t i_second = rest % n_second;
+        Mim1dWarmStart warm;  // the chain's first row starts cold
+        for (const std::size_t k : chain) {
+          while (!roll_ready[k].load(std::memory_order_acquire)) std::this_thread::yield();
+          results[side * row_cases + k * n_second + i_second] =
+              solve_case_wheel(setup, side, plan.dy_m[rows[k]], rolls[k], plan.load_values[i_second], workspace, &warm);
+          done.fetch_add(1, std::memory_order_relaxed);
+        }
       }
     }
   };
