@@ -581,20 +581,33 @@ void assemble(tables::Table& table, const SweepSetup& setup, const SweepPlan& pl
   const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size(), row_cases = rows.size() * n_second;
   std::vector<std::size_t> position(n_dy, n_dy);  // k of each selected row, n_dy elsewhere
   for (std::size_t k = 0; k < rows.size(); ++k) position[rows[k]] = k;
-  for (std::size_t k = 0; k < rows.size(); ++k)
-    for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
-      const std::size_t i_dy = rows[k];
-      const CaseWheel& right = results[k * n_second + i_second];
-      // Mirrored: the left wheel at dy is the right wheel at -dy (index n_dy - 1 - i_dy of a symmetric axis).
-      const CaseWheel& left = plan.mirrored ? results[position[n_dy - 1 - i_dy] * n_second + i_second]
-                                            : results[row_cases + k * n_second + i_second];
-      store_case_wheel(table, setup, i_dy, i_second, 0, right);
-      store_case_wheel(table, setup, i_dy, i_second, 1, left);
-      const std::size_t c = i_dy * n_second + i_second;
-      table.roll_rad[c] = rolls[k].roll_rad;
-      table.rolling_radius_difference_m[c] =
-          right.contact.rigid_contact.rolling_radius_m - left.contact.rigid_contact.rolling_radius_m;
+  // Each row's cases write only that row's entries (and read the results): the rows in parallel. Nothing may
+  // escape an OpenMP loop: the first failure (memory) is rethrown after it.
+  const auto n_rows = static_cast<std::ptrdiff_t>(rows.size());
+  std::exception_ptr failure;
+#pragma omp parallel for schedule(static) num_threads(plan.threads)
+  for (std::ptrdiff_t row = 0; row < n_rows; ++row) {
+    try {
+      const auto k = static_cast<std::size_t>(row);
+      for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
+        const std::size_t i_dy = rows[k];
+        const CaseWheel& right = results[k * n_second + i_second];
+        // Mirrored: the left wheel at dy is the right wheel at -dy (index n_dy - 1 - i_dy of a symmetric axis).
+        const CaseWheel& left = plan.mirrored ? results[position[n_dy - 1 - i_dy] * n_second + i_second]
+                                              : results[row_cases + k * n_second + i_second];
+        store_case_wheel(table, setup, i_dy, i_second, 0, right);
+        store_case_wheel(table, setup, i_dy, i_second, 1, left);
+        const std::size_t c = i_dy * n_second + i_second;
+        table.roll_rad[c] = rolls[k].roll_rad;
+        table.rolling_radius_difference_m[c] =
+            right.contact.rigid_contact.rolling_radius_m - left.contact.rigid_contact.rolling_radius_m;
+      }
+    } catch (...) {
+#pragma omp critical(ctab_assemble_failure)
+      if (!failure) failure = std::current_exception();
     }
+  }
+  if (failure) std::rethrow_exception(failure);
 }
 
 std::string utc_now() {
@@ -700,7 +713,7 @@ void TableSweep::solve_rows(const std::vector<std::size_t>& rows, tables::Table&
 }
 
 void TableSweep::finish(tables::Table& table) const {
-  assign_table_slots_along_dy(table);  // serial, on all rows: slots follow the contacts along dy
+  assign_table_slots_along_dy(table, impl_->plan.threads);  // on all rows: slots follow the contacts along dy
   table.jumps = tables::detect_jumps(table);
   add_provenance(table, impl_->config, impl_->setup, impl_->plan, impl_->info);
 }

@@ -52,7 +52,8 @@ inline constexpr double kZoneChangeMatch_m = 1e-3;
 //! value, wheel) series, the patches of each case, taken in order of rail position (so that the result depends
 //! only on the patches, not on how they were stored), are moved to the slots assign_slots_along_dy gives them.
 //! A patch is a flange patch when its wheel contact point y_wheel_m <= kFlangeRootS_m. Runs on complete tables
-//! (a single run, merged shards), so that the slots never depend on how the rows were solved.
-void assign_table_slots_along_dy(tables::Table& table);
+//! (a single run, merged shards), so that the slots never depend on how the rows were solved. The series on
+//! `threads` OpenMP threads (each series alone: the same result at any count).
+void assign_table_slots_along_dy(tables::Table& table, int threads = 1);
 
 }  // namespace ctab::gen
