@@ -17,12 +17,6 @@ class Handle {
   }
   [[nodiscard]] hid_t get() const noexcept { return id_; }
   [[nodiscard]] bool valid() const noexcept { return id_ >= 0; }
-  //! The id, no longer closed by this handle.
-  [[nodiscard]] hid_t release() noexcept {
-    const hid_t id = id_;
-    id_ = -1;
-    return id;
-  }
 
  private:
   hid_t id_;

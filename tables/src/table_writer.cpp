@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 #include "ctab/tables/table.hpp"
 #include "chunk_deflate.hpp"
@@ -153,19 +154,12 @@ class FilePlan {
       for (std::size_t index = 0; index < grids_[w]->count(); ++index) {
         const std::vector<hsize_t> offset = grids_[w]->offset(index);
         const std::vector<unsigned char>& chunk = compressed_[writes_[w].first_chunk + index];
-        if (H5Dwrite_chunk(open_[w], H5P_DEFAULT, 0, offset.data(), chunk.size(), chunk.data()) < 0)
+        if (H5Dwrite_chunk(open_[w].get(), H5P_DEFAULT, 0, offset.data(), chunk.size(), chunk.data()) < 0)
           return std::string("cannot write ") + writes_[w].path;
       }
     }
     return "";
   }
-
-  ~FilePlan() {
-    for (const hid_t dataset : open_)
-      if (dataset >= 0) H5Dclose(dataset);
-  }
-  FilePlan(const FilePlan&) = delete;
-  FilePlan& operator=(const FilePlan&) = delete;
 
  private:
   struct Chunk {
@@ -185,7 +179,6 @@ class FilePlan {
       for (std::size_t index = 0; index < grids_.back()->count(); ++index) chunks_.push_back({writes_.size(), index});
     }
     writes_.push_back(write);
-    open_.push_back(-1);
   }
 
   bool create_dataset(hid_t file, const DatasetWrite& write) {
@@ -202,7 +195,8 @@ class FilePlan {
         detail::write_text_attribute(dataset.get(), "units", write.units) &&
         detail::write_text_attribute(dataset.get(), "description", write.description) &&
         (write.axis_name == nullptr || detail::write_text_attribute(dataset.get(), "name", *write.axis_name));
-    if (attributes && write.direct) open_[static_cast<std::size_t>(&write - writes_.data())] = dataset.release();
+    // In the order of writes_; the others close here (the file's layout depends on when a dataset closes).
+    open_.push_back(write.direct ? std::move(dataset) : Handle(-1, H5Dclose));
     return attributes;
   }
 
@@ -230,7 +224,7 @@ class FilePlan {
   std::vector<std::optional<detail::ChunkGrid>> grids_;  // the direct datasets' chunk grids
   std::vector<Chunk> chunks_;
   std::vector<std::vector<unsigned char>> compressed_;
-  std::vector<hid_t> open_;  // the direct datasets, open between create and store_chunks
+  std::vector<Handle> open_;  // the direct datasets, open from create to the end (store_chunks)
 };
 
 // Task 0 creates the file's structure (FilePlan::create, HDF5), tasks 1... compress one chunk each: one wake-up of

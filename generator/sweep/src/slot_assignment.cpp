@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
-#include <exception>
 #include <optional>
 #include <tuple>
 
 #include "ctab/sweep/table_rows.hpp"
 #include "ctab/wheelrail/wheelrail_options.hpp"
+#include "parallel_loop.hpp"
 
 namespace ctab::gen {
 
@@ -153,35 +152,24 @@ std::vector<std::size_t> slot_permutation(const std::vector<std::size_t>& stored
 }  // namespace
 
 void assign_table_slots_along_dy(tables::Table& table, int threads) {
-  const std::size_t n_dy = table.n_dy(), n_second = table.n_second();
-  const auto n_series = static_cast<std::ptrdiff_t>(n_second * tables::kWheels);
-  // The (second-axis value, wheel) series touch disjoint cases: one task each. Nothing may escape an OpenMP loop:
-  // the first failure (memory) is rethrown after it.
-  std::exception_ptr failure;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(std::max(threads, 1))
-  for (std::ptrdiff_t index = 0; index < n_series; ++index) {
-    try {
-      const std::size_t i_second = static_cast<std::size_t>(index) / tables::kWheels;
-      const std::size_t wheel = static_cast<std::size_t>(index) % tables::kWheels;
-      std::vector<SlotCase> series(n_dy);
-      std::vector<std::vector<std::size_t>> stored(n_dy);
-      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
-        series[i_dy] = stored_case(table, i_dy, i_second, wheel, stored[i_dy]);
-      const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots);
-      for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) {
-        // A stored case never has more patches than slots, so it cannot overflow here; keep it as stored if it did.
-        if (!series[i_dy].success || slots[i_dy].overflow) continue;
-        const std::vector<std::size_t> new_slot = slot_permutation(stored[i_dy], slots[i_dy].slot_of, table.n_slots);
-        bool moves = false;  // most cases keep their slots
-        for (std::size_t slot = 0; slot < new_slot.size(); ++slot) moves = moves || new_slot[slot] != slot;
-        if (moves) permute_slots(table, table.wheel_index(i_dy, i_second, wheel), new_slot);
-      }
-    } catch (...) {
-#pragma omp critical(ctab_slot_failure)
-      if (!failure) failure = std::current_exception();
+  const std::size_t n_dy = table.n_dy();
+  // The (second-axis value, wheel) series touch disjoint cases: one task each.
+  detail::parallel_loop(table.n_second() * tables::kWheels, threads, true, [&](std::size_t index) {
+    const std::size_t i_second = index / tables::kWheels, wheel = index % tables::kWheels;
+    std::vector<SlotCase> series(n_dy);
+    std::vector<std::vector<std::size_t>> stored(n_dy);
+    for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy)
+      series[i_dy] = stored_case(table, i_dy, i_second, wheel, stored[i_dy]);
+    const std::vector<SlotAssignment> slots = assign_slots_along_dy(series, table.n_slots);
+    for (std::size_t i_dy = 0; i_dy < n_dy; ++i_dy) {
+      // A stored case never has more patches than slots, so it cannot overflow here; keep it as stored if it did.
+      if (!series[i_dy].success || slots[i_dy].overflow) continue;
+      const std::vector<std::size_t> new_slot = slot_permutation(stored[i_dy], slots[i_dy].slot_of, table.n_slots);
+      bool moves = false;  // most cases keep their slots
+      for (std::size_t slot = 0; slot < new_slot.size(); ++slot) moves = moves || new_slot[slot] != slot;
+      if (moves) permute_slots(table, table.wheel_index(i_dy, i_second, wheel), new_slot);
     }
-  }
-  if (failure) std::rethrow_exception(failure);
+  });
 }
 
 }  // namespace ctab::gen

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <ctime>
+#include <limits>
 #include <mutex>
 #include <numbers>
 #include <optional>
@@ -22,6 +23,7 @@
 #include "ctab/io/sha256.hpp"
 #include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/slot_assignment.hpp"
+#include "parallel_loop.hpp"
 
 namespace ctab::gen {
 
@@ -361,7 +363,7 @@ SweepPlan make_plan(const TableConfig& config, const GeneratorInfo& info) {
   return plan;
 }
 
-// Runs `work` on this thread, whose OpenMP threads (started once, start_openmp_threads) also serve the table's write,
+// Runs `work` on this thread, whose OpenMP threads (started once, generate_table) also serve the table's write,
 // while a reporter thread calls `progress` every 0.1 s (no I/O in the parallel region); no reporter without
 // `progress`.
 void run_with_progress(const std::function<void()>& work, const std::atomic<std::size_t>& done, std::size_t total,
@@ -486,11 +488,9 @@ std::vector<std::vector<std::size_t>> warm_start_chains(const SweepSetup& setup,
 // before the last, cheap ones far out.
 std::vector<std::size_t> chain_order(const SweepPlan& plan, const std::vector<std::size_t>& rows,
                                      const std::vector<std::vector<std::size_t>>& chains) {
-  std::vector<double> nearest(chains.size());
-  for (std::size_t c = 0; c < chains.size(); ++c) {
-    nearest[c] = std::abs(plan.dy_m[rows[chains[c].front()]]);
+  std::vector<double> nearest(chains.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t c = 0; c < chains.size(); ++c)
     for (const std::size_t k : chains[c]) nearest[c] = std::min(nearest[c], std::abs(plan.dy_m[rows[k]]));
-  }
   std::vector<std::size_t> order(chains.size());
   for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nearest[a] < nearest[b]; });
@@ -522,8 +522,7 @@ std::vector<CaseWheel> sweep(const SweepSetup& setup, const SweepPlan& plan, con
   }
   std::sort(solved.begin(), solved.end(), [&](std::size_t a, std::size_t b) { return rows[a] < rows[b]; });
   const std::vector<std::vector<std::size_t>> runs = roll_runs(rows, solved);
-  std::vector<std::atomic<bool>> roll_ready(n_rows);
-  for (auto& ready : roll_ready) ready.store(false, std::memory_order_relaxed);
+  std::vector<std::atomic<bool>> roll_ready(n_rows);  // value-initialised: false
   rolls = std::vector<CaseRoll>(n_rows);
   std::vector<CaseWheel> results(total);
   std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(plan.threads));  // one per thread
@@ -581,33 +580,22 @@ void assemble(tables::Table& table, const SweepSetup& setup, const SweepPlan& pl
   const std::size_t n_dy = plan.dy_m.size(), n_second = plan.load_values.size(), row_cases = rows.size() * n_second;
   std::vector<std::size_t> position(n_dy, n_dy);  // k of each selected row, n_dy elsewhere
   for (std::size_t k = 0; k < rows.size(); ++k) position[rows[k]] = k;
-  // Each row's cases write only that row's entries (and read the results): the rows in parallel. Nothing may
-  // escape an OpenMP loop: the first failure (memory) is rethrown after it.
-  const auto n_rows = static_cast<std::ptrdiff_t>(rows.size());
-  std::exception_ptr failure;
-#pragma omp parallel for schedule(static) num_threads(plan.threads)
-  for (std::ptrdiff_t row = 0; row < n_rows; ++row) {
-    try {
-      const auto k = static_cast<std::size_t>(row);
-      for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
-        const std::size_t i_dy = rows[k];
-        const CaseWheel& right = results[k * n_second + i_second];
-        // Mirrored: the left wheel at dy is the right wheel at -dy (index n_dy - 1 - i_dy of a symmetric axis).
-        const CaseWheel& left = plan.mirrored ? results[position[n_dy - 1 - i_dy] * n_second + i_second]
-                                              : results[row_cases + k * n_second + i_second];
-        store_case_wheel(table, setup, i_dy, i_second, 0, right);
-        store_case_wheel(table, setup, i_dy, i_second, 1, left);
-        const std::size_t c = i_dy * n_second + i_second;
-        table.roll_rad[c] = rolls[k].roll_rad;
-        table.rolling_radius_difference_m[c] =
-            right.contact.rigid_contact.rolling_radius_m - left.contact.rigid_contact.rolling_radius_m;
-      }
-    } catch (...) {
-#pragma omp critical(ctab_assemble_failure)
-      if (!failure) failure = std::current_exception();
+  // Each row's cases write only that row's entries (and read the results): the rows in parallel.
+  detail::parallel_loop(rows.size(), plan.threads, false, [&](std::size_t k) {
+    for (std::size_t i_second = 0; i_second < n_second; ++i_second) {
+      const std::size_t i_dy = rows[k];
+      const CaseWheel& right = results[k * n_second + i_second];
+      // Mirrored: the left wheel at dy is the right wheel at -dy (index n_dy - 1 - i_dy of a symmetric axis).
+      const CaseWheel& left = plan.mirrored ? results[position[n_dy - 1 - i_dy] * n_second + i_second]
+                                            : results[row_cases + k * n_second + i_second];
+      store_case_wheel(table, setup, i_dy, i_second, 0, right);
+      store_case_wheel(table, setup, i_dy, i_second, 1, left);
+      const std::size_t c = i_dy * n_second + i_second;
+      table.roll_rad[c] = rolls[k].roll_rad;
+      table.rolling_radius_difference_m[c] =
+          right.contact.rigid_contact.rolling_radius_m - left.contact.rigid_contact.rolling_radius_m;
     }
-  }
-  if (failure) std::rethrow_exception(failure);
+  });
 }
 
 std::string utc_now() {
@@ -720,6 +708,15 @@ void TableSweep::finish(tables::Table& table) const {
 
 namespace {
 
+// Starts the calling thread's OpenMP team of `threads` (nothing for 1): a team's first region waits until every
+// thread runs, which later regions of the same thread do not.
+void start_openmp_threads(int threads) noexcept {
+  if (threads <= 1) return;
+  std::atomic<int> started{0};  // a region with a body: GCC drops an empty one
+#pragma omp parallel num_threads(threads)
+  started.fetch_add(1, std::memory_order_relaxed);
+}
+
 // The first parallel region of a thread creates its OpenMP threads and waits until every one of them runs: on a
 // loaded or virtual machine that took 1 to 4 ms (the scheduler's tick), with every thread of the team idle. So the
 // calling thread starts its team (and the HDF5 library) while a helper thread loads the profiles and builds the
@@ -744,13 +741,6 @@ TableSweep make_sweep_starting_threads(const TableConfig& config, const Generato
 }
 
 }  // namespace
-
-void start_openmp_threads(int threads) noexcept {
-  if (threads <= 1) return;
-  std::atomic<int> started{0};  // a region with a body: GCC drops an empty one
-#pragma omp parallel num_threads(threads)
-  started.fetch_add(1, std::memory_order_relaxed);
-}
 
 tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info, const ProgressCallback& progress) {
   const TableSweep sweep = make_sweep_starting_threads(config, info);

@@ -179,10 +179,6 @@ class TableSweep {
 [[nodiscard]] tables::Table generate_table(const TableConfig& config, const GeneratorInfo& info,
                                            const ProgressCallback& progress = {});
 
-//! Starts the calling thread's OpenMP team of `threads` (an empty parallel region; nothing for 1): a team's first
-//! region waits until every thread runs, which later regions of the same thread do not.
-void start_openmp_threads(int threads) noexcept;
-
 //! Equivalent ellipse of a patch (Kik-Piotrowski recipe: area and length/width ratio kept):
 //! a = sqrt(area/pi) sqrt(L/W), b = sqrt(area/pi) sqrt(W/L) [m].
 void equivalent_ellipse(double area_m2, double length_m, double width_m, double& a_m, double& b_m) noexcept;
