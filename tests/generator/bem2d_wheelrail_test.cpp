@@ -64,7 +64,7 @@ class Bem2dWheelRail : public ctab::test::ManchesterSuite<Case> {
     ASSERT_GT(ref.rows, 0) << c.file << " has no row at dy " << c.dy_mm;
     WheelRailOptions options;
     options.method = NormalMethod::Bem2d;
-    options.bem2d_alignment = Bem2dAlignment::CentresAtOrigin;
+    options.bem2d_alignment = GridAlignment::CentresAtOrigin;
     if (plane == Plane::Ctab) {
       options.reference_at_interpenetration_centre = true;
     } else {

@@ -30,7 +30,7 @@ class FlankGrid : public ctab::test::ManchesterSuite<const char*> {
     options.reference_at_interpenetration_centre = true;  // CONTACT's rule, as flange_reference_test
     options.method = method;
     options.mim1d.strip_width_m = width_m;
-    options.bem2d_alignment = Bem2dAlignment::CentresAtOrigin;  // CONTACT's wheel-rail grid
+    options.bem2d_alignment = GridAlignment::CentresAtOrigin;  // CONTACT's wheel-rail grid
     const WheelContact c =
         solve_wheel_contact(*side_, 7.5e-3, 0.0, effective_modulus(kSteel, kSteel), kind, kLoad_N, options);
     EXPECT_TRUE(is_success(c.status)) << status_name(c.status) << " " << c.detail;

@@ -59,29 +59,42 @@ inline ContactRowLine contact_row_line(const std::string& summary_file, double d
   return {y_m, rail.z_at(y_m), table.numbers("contact_angle_rad")[row]};
 }
 
-//! p0 along the patch against a CONTACT strip file (columns y_rail_mm, p0_i_MPa): ctab's strips interpolated
-//! linearly at CONTACT's rows by rail y (0 outside ctab's patches), RMS over CONTACT's largest p0.
+//! p0 along the patch against a CONTACT strip file (columns y_rail_mm, p0_i_MPa), RMS over CONTACT's largest p0.
+//! ctab's p0 at a row: linear between the centres of a patch's strips, and over the outer half of its edge strips
+//! that strip's p0 (MIM-1D's strip carries its pressure across its whole width, as its area and force count it);
+//! 0 outside every patch. Without the edge halves a row 10 um beyond the edge strip's centre read 0 (the flank at
+//! dy 7.5 mm, where both models end their patch on the same row).
 //! With `line` and `rail` (planar), ctab's strips are placed on CONTACT's row line (ContactRowLine); without, at
 //! their y_rail_m (conformal: the surface points, as CONTACT's conformal rows).
 inline double p0_profile_rms(const gen::WheelContact& contact, const std::string& strip_file,
                              const ContactRowLine* line = nullptr, const gen::ProfileTable* rail = nullptr) {
   const auto table = read_csv(strip_file);
   const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
-  std::vector<std::pair<double, double>> ours;  // (y_rail [mm], p0 [MPa])
-  for (const auto& patch : contact.patches)
+  std::vector<double> ours(y.size(), 0.0);  // ctab's p0 at each row [MPa]
+  for (const auto& patch : contact.patches) {
+    std::vector<std::pair<double, double>> strips;  // (y_rail [mm], p0 [MPa])
     for (const auto& s : patch.strips)
-      ours.emplace_back(line && rail ? line->row_y_mm(s.y_rail_m, *rail) : s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
-  std::sort(ours.begin(), ours.end());
-  double sum = 0.0;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    double value = 0.0;
-    for (std::size_t k = 1; k < ours.size(); ++k)
-      if (y[i] >= ours[k - 1].first && y[i] <= ours[k].first && ours[k].first - ours[k - 1].first < 0.5) {
-        const double t = (y[i] - ours[k - 1].first) / (ours[k].first - ours[k - 1].first);
-        value = (1 - t) * ours[k - 1].second + t * ours[k].second;
-      }
-    sum += (value - p[i]) * (value - p[i]);
+      strips.emplace_back(line && rail ? line->row_y_mm(s.y_rail_m, *rail) : s.y_rail_m * 1e3, s.p0_Pa * 1e-6);
+    if (strips.size() < 2) continue;
+    std::sort(strips.begin(), strips.end());
+    const double low_edge = strips[0].first - 0.5 * (strips[1].first - strips[0].first);
+    const std::size_t n = strips.size();
+    const double high_edge = strips[n - 1].first + 0.5 * (strips[n - 1].first - strips[n - 2].first);
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      if (y[i] < low_edge || y[i] > high_edge) continue;
+      if (y[i] <= strips.front().first) ours[i] = strips.front().second;
+      else if (y[i] >= strips.back().first) ours[i] = strips.back().second;
+      else
+        for (std::size_t k = 1; k < n; ++k)
+          if (y[i] <= strips[k].first) {
+            const double t = (y[i] - strips[k - 1].first) / (strips[k].first - strips[k - 1].first);
+            ours[i] = (1 - t) * strips[k - 1].second + t * strips[k].second;
+            break;
+          }
+    }
   }
+  double sum = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) sum += (ours[i] - p[i]) * (ours[i] - p[i]);
   return std::sqrt(sum / static_cast<double>(y.size())) / *std::max_element(p.begin(), p.end());
 }
 

@@ -29,22 +29,19 @@ GapSample sample_gap(const GapProfile& gap, double y) {
   return s;
 }
 
-// Offset of the element centres from the integer multiples of the element size [-] (bem2d_options.hpp).
-double centre_offset(Bem2dAlignment alignment) { return alignment == Bem2dAlignment::CentresAtOrigin ? 0.0 : 0.5; }
-
 // Row indices (centre y = (j + offset) dy) whose centres lie inside the gap data.
-void data_rows(const GapProfile& gap, double dy, Bem2dAlignment alignment, long& first, long& last) {
-  first = static_cast<long>(std::ceil(gap.y_m.front() / dy - centre_offset(alignment)));
-  last = static_cast<long>(std::floor(gap.y_m.back() / dy - centre_offset(alignment)));
+void data_rows(const GapProfile& gap, double dy, GridAlignment alignment, long& first, long& last) {
+  first = static_cast<long>(std::ceil(gap.y_m.front() / dy - grid_centre_offset(alignment)));
+  last = static_cast<long>(std::floor(gap.y_m.back() / dy - grid_centre_offset(alignment)));
 }
 
-double row_centre(long j, double dy, Bem2dAlignment alignment) {
-  return (static_cast<double>(j) + centre_offset(alignment)) * dy;
+double row_centre(long j, double dy, GridAlignment alignment) {
+  return (static_cast<double>(j) + grid_centre_offset(alignment)) * dy;
 }
 
 }  // namespace
 
-double deepest_separation(const GapProfile& gap, double dy, Bem2dAlignment alignment) {
+double deepest_separation(const GapProfile& gap, double dy, GridAlignment alignment) {
   long first = 0, last = 0;
   data_rows(gap, dy, alignment, first, last);
   double deepest = std::numeric_limits<double>::infinity();
@@ -52,11 +49,11 @@ double deepest_separation(const GapProfile& gap, double dy, Bem2dAlignment align
   return deepest;
 }
 
-SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, Bem2dAlignment alignment,
+SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, GridAlignment alignment,
                               double covered_approach, ElementGrid& grid, std::string& why) {
   long first = 0, last = 0;
   data_rows(gap, dy, alignment, first, last);
-  const double column_offset = centre_offset(alignment);  // nearest element centres at x = -/+ offset dx
+  const double column_offset = grid_centre_offset(alignment);  // nearest element centres at x = -/+ offset dx
   if (last - first + 1 > static_cast<long>(16 * kBem2dMaxElementsPerSide) || last < first) {
     why = "element width dy does not suit the gap's y-range";
     return SolveStatus::InvalidInput;

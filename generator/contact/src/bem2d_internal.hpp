@@ -26,11 +26,11 @@ struct ElementGrid {
 };
 
 //! Deepest separation of the gap at the element-row centres inside its data [m] (the approach of first contact).
-[[nodiscard]] double deepest_separation(const GapProfile& gap, double dy, Bem2dAlignment alignment);
+[[nodiscard]] double deepest_separation(const GapProfile& gap, double dy, GridAlignment alignment);
 
 //! Builds the grid for a validated gap. Returns InvalidInput (with `why`) when it would exceed
 //! kBem2dMaxElementsPerSide or fewer than one row fits; NoContact when no element has h < covered_approach.
-[[nodiscard]] SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, Bem2dAlignment alignment,
+[[nodiscard]] SolveStatus make_element_grid(const GapProfile& gap, double dx, double dy, GridAlignment alignment,
                                             double covered_approach, ElementGrid& grid, std::string& why);
 
 enum class Prescribed { Approach, Load };

@@ -70,8 +70,9 @@ DeepestPoint deepest_point(const GapProfile& gap) {
           gap.y_m.back()};
 }
 
+// Strip centres (k + centre_offset) strip_width_m, as strip_grid.hpp places them.
 NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point, double strip_width_m,
-                          std::chrono::steady_clock::time_point start) {
+                          double centre_offset, std::chrono::steady_clock::time_point start) {
   NormalSolution solution;
   solution.method = "hertz";
   solution.status = contact.status;
@@ -88,8 +89,8 @@ NormalSolution make_patch(const HertzContact& contact, const DeepestPoint& point
     patch.y_min_m = point.y - contact.semi_axis_y_m;
     patch.y_max_m = point.y + contact.semi_axis_y_m;
     const double b = contact.semi_axis_y_m;
-    for (long k = static_cast<long>(std::ceil((point.y - b) / strip_width_m - 0.5));; ++k) {
-      const double y = (static_cast<double>(k) + 0.5) * strip_width_m;
+    for (long k = static_cast<long>(std::ceil((point.y - b) / strip_width_m - centre_offset));; ++k) {
+      const double y = (static_cast<double>(k) + centre_offset) * strip_width_m;
       if (y > point.y + b) break;
       const double s = (y - point.y) / b;
       if (std::abs(s) >= 1.0) continue;
@@ -116,7 +117,7 @@ NormalSolution solve_hertz_for_approach(const GapProfile& gap, double E_star_Pa,
     point.B = lateral_curvature(gap, point, approach_m - point.h);
     contact = hertz_from_approach(point.A, point.B, E_star_Pa, approach_m - point.h);
   }
-  return make_patch(contact, point, strip_width_m, start);
+  return make_patch(contact, point, strip_width_m, grid_centre_offset(gap.strip_alignment), start);
 }
 
 NormalSolution solve_hertz_for_load(const GapProfile& gap, double E_star_Pa, double strip_width_m,
@@ -132,7 +133,7 @@ NormalSolution solve_hertz_for_load(const GapProfile& gap, double E_star_Pa, dou
     contact = hertz_from_load(point.A, point.B, E_star_Pa, normal_force_N);
     if (settled) break;
   }
-  return make_patch(contact, point, strip_width_m, start);
+  return make_patch(contact, point, strip_width_m, grid_centre_offset(gap.strip_alignment), start);
 }
 
 }  // namespace ctab::gen

@@ -570,7 +570,7 @@ double Mim1dSolver::hertz_start_approach(double normal_force_N) const {
 }
 
 long Mim1dSolver::first_strip_index() const noexcept {
-  return std::lround(grid_.y_m.front() / grid_.strip_width_m - 0.5);
+  return std::lround(grid_.y_m.front() / grid_.strip_width_m - grid_.centre_offset);
 }
 
 bool Mim1dSolver::load_warm_start(const Mim1dWarmStart& start, double& approach_m) {

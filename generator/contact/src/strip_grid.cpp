@@ -26,9 +26,9 @@ double node_slope(const std::vector<double>& y, const std::vector<double>& h, st
 
 double strip_count(const GapProfile& gap, double strip_width_m) noexcept {
   if (gap.y_m.empty()) return 0.0;
-  // Edges at multiples of the width from y = 0: centres (k + 1/2) w for k in [first, last].
-  const double first = std::ceil(gap.y_m.front() / strip_width_m - 0.5);
-  const double last = std::floor(gap.y_m.back() / strip_width_m - 0.5);
+  // Centres (k + offset) w for k in [first, last].
+  const double first = std::ceil(gap.y_m.front() / strip_width_m - grid_centre_offset(gap.strip_alignment));
+  const double last = std::floor(gap.y_m.back() / strip_width_m - grid_centre_offset(gap.strip_alignment));
   return last - first + 1.0;
 }
 
@@ -50,12 +50,14 @@ void fill_strip_grid(const GapProfile& gap, double strip_width_m, StripGrid& gri
                          std::to_string(strip_width_m) + " m (max " + std::to_string(kMaxStripsPerPatch) +
                          "): increase the strip width");
   const double y_first = gap.y_m.front(), y_last = gap.y_m.back();
-  const auto first = static_cast<long>(std::ceil(y_first / strip_width_m - 0.5));
-  const auto last = static_cast<long>(std::floor(y_last / strip_width_m - 0.5));
+  const double offset = grid_centre_offset(gap.strip_alignment);
+  const auto first = static_cast<long>(std::ceil(y_first / strip_width_m - offset));
+  const auto last = static_cast<long>(std::floor(y_last / strip_width_m - offset));
   if (last - first + 1 < 3)
     throw InputError(gap.source, 0,
                      "the gap's y-range holds fewer than 3 strips of width " + std::to_string(strip_width_m) + " m");
   grid.strip_width_m = strip_width_m;
+  grid.centre_offset = offset;
   const auto count = static_cast<std::size_t>(last - first + 1);
   grid.y_m.resize(count);
   grid.h_m.resize(count);
@@ -63,7 +65,7 @@ void fill_strip_grid(const GapProfile& gap, double strip_width_m, StripGrid& gri
   grid.B_per_m.resize(count);
   std::size_t segment = 0;
   for (std::size_t i = 0; i < count; ++i) {
-    const double y = (static_cast<double>(first + static_cast<long>(i)) + 0.5) * strip_width_m;
+    const double y = (static_cast<double>(first + static_cast<long>(i)) + offset) * strip_width_m;
     while (segment + 2 < gap.size() && gap.y_m[segment + 1] < y) ++segment;
     const double y0 = gap.y_m[segment], y1 = gap.y_m[segment + 1];
     const double width = y1 - y0;

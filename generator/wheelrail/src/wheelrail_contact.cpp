@@ -85,6 +85,15 @@ constexpr int kStripSolveRetries = 4;  // failed strip solves after a successful
 constexpr double kMinGapSlope = -20.0;
 constexpr double kMaxGapSlope = 0.8;
 
+// With CONTACT's reference rule the strips take CONTACT's wheel-rail grid too: a strip centred on the reference point
+// (its strip files hold rows at s = 0, +-ds, ...), so that ctab's strip k is CONTACT's row k. Off by half a strip,
+// CONTACT's edge row of the flank patch (dy 7.5 mm, normal force, 8 rows) fell between ctab's edge strip and the
+// next: p0 profile RMS 17 % against 3.4 % aligned (flange_reference_test). The deepest point (the default, as the
+// tables were validated) keeps the edges at the origin.
+GridAlignment strip_alignment(const WheelRailOptions& options) {
+  return options.reference_at_interpenetration_centre ? GridAlignment::CentresAtOrigin : GridAlignment::EdgesAtOrigin;
+}
+
 std::string number_text(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", value);
@@ -137,9 +146,10 @@ struct NormalLine {
 
 class PatchBuilder {
  public:
-  PatchBuilder(const SideGeometry& side, double dy, double roll, double z_first, ContactSurface surface)
+  PatchBuilder(const SideGeometry& side, double dy, double roll, double z_first, ContactSurface surface,
+               GridAlignment strips)
       : side_(side), dy_(dy), roll_(roll), cos_roll_(std::cos(roll)), sin_roll_(std::sin(roll)), z_first_(z_first),
-        surface_(surface) {}
+        surface_(surface), strips_(strips) {}
   //! z_ws of first contact: the wheel is placed touching the rail.
   void set_first_contact_height(double z_first) { z_first_ = z_first; }
 
@@ -165,11 +175,13 @@ class PatchBuilder {
     p.z0 = side_.rail().at(p.y0).z;
     p.window_depth = depth;
     p.gap.source = "wheel-rail patch";
+    p.gap.strip_alignment = strips_;
     clear(p);
     // Towards -s first (then reversed), then from s = 0 towards +s: the samples come out in increasing s.
     sample_side(p, -1, depth, step);
     for (std::vector<double>* v : columns(p)) std::reverse(v->begin(), v->end());
     sample_side(p, +1, depth, step);
+    if (surface_ == ContactSurface::Conformal) start_arc_length_at_reference_y(p);
     return p.gap.size() >= kMinPatchSamples;
   }
 
@@ -237,6 +249,19 @@ class PatchBuilder {
     return true;
   }
 
+  // Conformal: s = 0 at the surface point above the reference rail point (same rail y), as CONTACT's rows lie (its
+  // row at s = 0 has the reference point's y_rail). The marching starts where the rail point's normal meets the
+  // surface instead, which on the flank (69 deg, the surface 0.05 mm inside the rail) lies 0.13 mm further along
+  // the surface: the strips sat 2/3 of a row off CONTACT's.
+  static void start_arc_length_at_reference_y(PatchProblem& p) {
+    const std::vector<double>& y = p.rail_y;
+    if (y.size() < 2 || !(p.y0 > y.front() && p.y0 < y.back())) return;
+    const auto upper = static_cast<std::size_t>(std::upper_bound(y.begin(), y.end(), p.y0) - y.begin());
+    const double t = (p.y0 - y[upper - 1]) / (y[upper] - y[upper - 1]);
+    const double origin = (1 - t) * p.gap.y_m[upper - 1] + t * p.gap.y_m[upper];
+    for (double& s : p.gap.y_m) s -= origin;
+  }
+
   // Conformal: the reference surface point at arc length s_prev + ds (ds = 0: the reference point itself), by a
   // predictor along the last tangent and corrector passes that put the point midway between rail and wheel on its
   // own normal, whose inclination is the mean of the two profile inclinations there (CONTACT's averaged normal).
@@ -269,9 +294,11 @@ class PatchBuilder {
   }
 
   // One corrector pass: intersects `line` with both profiles, moves its point to the midpoint and turns it to the
-  // mean inclination of the rail and wheel there (keeps n_rail, n_wheel relative to the moved point). CONTACT reads
-  // both inclinations at the surface point's own y instead (README "Which inclinations make the normal"); not
-  // adopted yet: it fixes the flank's direction but moves one p0 edge row past its target.
+  // mean of the rail's and the wheel's inclination at the point's own rail y (keeps n_rail, n_wheel relative to the
+  // moved point): CONTACT's rule, read off its rows (at its reference row, y -42.2747 mm, the local angle -69.563 deg
+  // is the mean of the rail's -69.126 and the wheel flank's -70.0 deg there). Taken where the normal meets each
+  // profile instead, the rail's 13 mm arc was read 0.09 mm further along and 1.1 deg steeper: the flank's force
+  // direction -0.59 deg from CONTACT's, its lateral force +8.6 % of FZ (README "Which inclinations make the normal").
   bool midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
     if (!intersect(line, dz, state, w)) return false;
     const double mid = 0.5 * (state.n_rail + state.n_wheel);
@@ -279,8 +306,9 @@ class PatchBuilder {
     line.z += mid * line.c;
     state.n_rail -= mid;
     state.n_wheel -= mid;
-    const double rail_angle = std::atan(side_.rail().at(line.y - state.n_rail * line.sn).dz);
-    const double angle = 0.5 * (rail_angle + std::atan(w.slope));
+    const double rail_angle = std::atan(side_.rail().at(line.y).dz);
+    double s_guess = state.s_guess;
+    const double angle = 0.5 * (rail_angle + std::atan(wheel_at(line.y, s_guess).slope));
     line.c = std::cos(angle);
     line.sn = std::sin(angle);
     return true;
@@ -354,6 +382,7 @@ class PatchBuilder {
   const SideGeometry& side_;
   double dy_, roll_, cos_roll_, sin_roll_, z_first_;
   ContactSurface surface_;
+  GridAlignment strips_;
 };
 
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
@@ -449,7 +478,8 @@ class WheelCase {
   WheelCase(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load, double load_value,
             const WheelRailOptions& options, WheelContactWorkspace::Impl& workspace, Mim1dWarmStart* warm_start)
       : side_(side), dy_(dy_m), roll_(roll_rad), E_star_(E_star_Pa), load_(load), value_(load_value), options_(options),
-        ws_(workspace), warm_(warm_start), builder_(side, dy_m, roll_rad, 0.0, options.surface) {}
+        ws_(workspace), warm_(warm_start),
+        builder_(side, dy_m, roll_rad, 0.0, options.surface, strip_alignment(options)) {}
 
   WheelContact solve() {
     ws_.used = 0;

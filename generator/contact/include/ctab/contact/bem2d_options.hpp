@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "ctab/contact/grid_alignment.hpp"
+
 namespace ctab::gen {
 
 //! Most elements along either side of the bem2d grid. Memory: the FFT work arrays hold about
@@ -12,15 +14,6 @@ inline constexpr std::size_t kBem2dMaxElementsPerSide = 1024;
 //! Cap on constrained-CG iterations per solve. Chosen: the measured cases (Hertz sphere, the non-Hertzian body)
 //! need 20-200 iterations up to 512 x 512 elements; 5000 leaves a wide margin and bounds a hopeless case.
 inline constexpr int kBem2dMaxIterations = 5000;
-
-//! Where the elements sit relative to the origin of the gap's coordinates. CONTACT puts element edges there for a
-//! gap of its own (the Hertz sphere and the non-Hertzian body: rows at y = (j + 1/2) dy, an even count along x),
-//! and centres its wheel-rail grid on the contact reference point (rows at s = j ds, an element at x = 0: odd
-//! counts in its strip files). On an 8-11 row flank patch the two placements count areas 3 % apart.
-enum class Bem2dAlignment : std::uint8_t {
-  EdgesAtOrigin = 0,    //!< element edges at integer multiples of dx, dy (gap files)
-  CentresAtOrigin = 1,  //!< element centres at integer multiples (wheel-rail patches: centred on the reference)
-};
 
 //! Element grid and solver settings of bem2d: dx x dy rectangles placed as `alignment` says.
 struct Bem2dGrid {
@@ -32,7 +25,10 @@ struct Bem2dGrid {
   //! 1e-8: 88, 1e-10: 119 at 0.1 mm; peak pressure changes by 1e-6 between 1e-7 and 1e-10).
   double tolerance = 1.0e-8;
   int max_iterations = kBem2dMaxIterations;  //!< constrained-CG iteration cap [-], at most kBem2dMaxIterations
-  Bem2dAlignment alignment = Bem2dAlignment::EdgesAtOrigin;
+  //! Where the elements sit (grid_alignment.hpp), along x as along y: centred, an element sits at x = 0 (odd
+  //! counts along x, as CONTACT's wheel-rail strip files). On an 8-11 row flank patch the two placements count
+  //! areas 3 % apart.
+  GridAlignment alignment = GridAlignment::EdgesAtOrigin;
 };
 
 }  // namespace ctab::gen

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "ctab/contact/grid_alignment.hpp"
+
 namespace ctab::gen {
 
 struct GapProfile {
@@ -15,6 +17,9 @@ struct GapProfile {
   std::vector<double> A_per_m;  //!< relative curvature in the rolling direction, > 0 [1/m]
   std::vector<double> B_per_m;  //!< relative curvature in the lateral direction [1/m] (may be <= 0)
   std::string source = "gap";   //!< where it came from, for error messages
+  //! Where the strips sit (strip_grid.hpp): edges at multiples of 2b from y = 0 (CONTACT's grids of the paper's
+  //! cases, the default), or a strip centred on y = 0 (CONTACT's wheel-rail grid, a row on its reference point).
+  GridAlignment strip_alignment = GridAlignment::EdgesAtOrigin;
 
   [[nodiscard]] std::size_t size() const noexcept { return y_m.size(); }
 };

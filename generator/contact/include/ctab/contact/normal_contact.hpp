@@ -27,7 +27,7 @@ struct MethodOptions {
   double strip_width_m = 0.2e-3;  //!< strip width 2b of every rung's output [m] (overrides mim1d.strip_width_m)
   Mim1dOptions mim1d;             //!< MIM-1D only: update rule, curvature treatment, tolerances
   //! bem2d only: element placement (wheel-rail patches: centred on the reference point, as CONTACT's grid).
-  Bem2dAlignment bem2d_alignment = Bem2dAlignment::EdgesAtOrigin;
+  GridAlignment bem2d_alignment = GridAlignment::EdgesAtOrigin;
   //! bem2d only: element length along x [m]; 0 = square elements of the strip width. A long, narrow patch (the
   //! flange flank: 1.6 x 29 mm) can take rows finer than its elements are long (flank_grid_test).
   double bem2d_element_length_m = 0.0;

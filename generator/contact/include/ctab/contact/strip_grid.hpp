@@ -1,8 +1,8 @@
 #pragma once
-//! Uniform strips of width 2b along the lateral line, with edges at integer multiples of 2b from y = 0 of the
-//! gap's coordinate (CONTACT's grid convention, so strips line up with its rows). The gap is resampled at the
-//! strip centres: h by cubic Hermite interpolation with 3-point slopes (exact for piecewise quadratics),
-//! A and B linearly.
+//! Uniform strips of width 2b along the lateral line, centred at (k + offset) 2b from y = 0 of the gap's
+//! coordinate, k integer, placed as the gap's strip_alignment says (grid_alignment.hpp: CONTACT's conventions, so
+//! that strips line up with its rows). The gap is resampled at the strip centres: h by cubic Hermite interpolation with 3-point slopes
+//! (exact for piecewise quadratics), A and B linearly.
 #include <cstddef>
 #include <vector>
 
@@ -12,6 +12,7 @@ namespace ctab::gen {
 
 struct StripGrid {
   double strip_width_m = 0.0;   //!< 2b [m]
+  double centre_offset = 0.5;   //!< strip k's centre is (k + centre_offset) 2b (GapProfile::strip_alignment)
   std::vector<double> y_m;      //!< strip centres [m] (n)
   std::vector<double> h_m;      //!< separation at the centres [m] (n)
   std::vector<double> A_per_m;  //!< rolling-direction relative curvature [1/m] (n)

@@ -56,7 +56,7 @@ struct WheelRailOptions {
   //! (rows at s = k ds from the reference point, an element at x = 0); with CONTACT's reference point it is the
   //! like-for-like comparison with CONTACT (bem2d_wheelrail_test). Tables and `ctab bench accuracy` (at ctab's
   //! default deepest point) keep the edges at the origin.
-  Bem2dAlignment bem2d_alignment = Bem2dAlignment::EdgesAtOrigin;
+  GridAlignment bem2d_alignment = GridAlignment::EdgesAtOrigin;
   //! bem2d's element length along x [m]; 0 = square elements of the strip width (MethodOptions).
   double bem2d_element_length_m = 0.0;
   //! The main patch's plane through the rail point at rail_y_m, inclined at contact_angle_rad, instead of ctab's
