@@ -110,6 +110,23 @@ TEST(Convergence, ConformalFlankReferenceWithTheLoadOnTheRoot) {
   }
 }
 
+TEST(Convergence, ConformalWithContactsRuleBalancesFromRootToFlank) {
+  // Conformal with CONTACT's reference rule, vertical load: 148 (built-in) and 180 (Manchester) single-wheel cases of
+  // the 0.01 mm sweep at |dy| 6.65-6.82 mm ended in max-iterations: x settled, but the vertical load, moved by up to
+  // 1e-5 of itself by x's 1 nm settling, never balanced to 1e-10. 0.03 mm steps through that window, 3 loads.
+  std::string text =
+      config_text(false, "wheel", "vertical_load_N = 78.5e3", "{ start = 0.0, stop = 1e-3, step = 1e-3 }");
+  text.insert(text.find("[axes]"), "surface = \"conformal\"\nreference_point = \"interpenetration-centre\"\n");
+  const SweepSetup setup = make_sweep_setup(parse_table_config(text, "conformal_centre.toml"));
+  for (const double load_N : {34.4e3, 77.8e3, 121.1e3})
+    for (double dy_mm = 6.64; dy_mm < 6.84; dy_mm += 0.03) {
+      const CaseSolution solved = solve_table_case(setup, dy_mm * 1e-3, load_N);
+      const WheelContact& right = solved.wheels[0].contact;
+      EXPECT_TRUE(is_success(right.status)) << "dy " << dy_mm << " mm, " << load_N << " N: " << right.detail;
+      EXPECT_NEAR(right.vertical_force_N, load_N, 1e-9 * load_N) << "dy " << dy_mm << " mm";
+    }
+}
+
 TEST(Convergence, LoadAxisExampleHasNoFailure) {
   // examples/configs/load_axis.toml exited with status 4 (wheelset, built-in profiles, dy +-5.1 mm at 100 kN).
   const auto table =

@@ -196,8 +196,8 @@ class PatchBuilder {
   // State carried from sample to sample along one side: Newton guesses and, conformal, the last surface point.
   struct SampleState {
     double n_rail = 0, n_wheel = 0, s_guess = 0;
-    NormalLine line;  // conformal: the last sample's normal through its surface point
-    double s = 0;     // conformal: its arc length
+    NormalLine line;    // conformal: the last sample's normal through its surface point
+    double s = 0;       // conformal: its arc length
     double s_at_y = 0;  // conformal: the wheel parameter at the surface point's own y (midway's Newton guess)
   };
 
