@@ -121,6 +121,8 @@ TEST(StripPlacement, FollowsContactsGridWithItsReferenceRule) {
             EXPECT_NEAR(s.y_rail_m, main.y_rail_m, 1e-9) << where;
           }
         }
-        if (contacts_rule && surface == ContactSurface::Conformal) EXPECT_TRUE(at_reference) << where;
+        if (contacts_rule && surface == ContactSurface::Conformal) {
+          EXPECT_TRUE(at_reference) << where;
+        }
       }
 }

@@ -28,11 +28,14 @@ constexpr double kMaxSolveTime_s = 60.0;  // "no hang": far above the slowest so
 // own patches: 1-5 reference strips against a resolved rung patch in wheelrail_noise).
 void expect_resolution_status(const StabilityRow& r, const std::string& what) {
   const bool discretised = r.method != "hertz";
-  if (!discretised) EXPECT_NE(r.status, SolveStatus::UnderResolved) << what;
+  if (!discretised) {
+    EXPECT_NE(r.status, SolveStatus::UnderResolved) << what;
+  }
   const bool clearly_under = r.scene != "wheelrail_noise" && std::isfinite(r.area_error_rel) &&
                              r.reference_area_m2 > 0.0 && r.min_patch_strips < 0.75 * kStabilityMinResolvedStrips;
-  if (discretised && clearly_under && is_success(r.status) && r.status != SolveStatus::NoContact)
+  if (discretised && clearly_under && is_success(r.status) && r.status != SolveStatus::NoContact) {
     EXPECT_EQ(r.status, SolveStatus::UnderResolved) << what << ", resolved strips " << r.min_patch_strips;
+  }
 }
 
 int under_resolved_rows(const std::vector<StabilityRow>& rows) {
