@@ -1,8 +1,8 @@
 #pragma once
 //! Uniform strips of width 2b along the lateral line, centred at (k + offset) 2b from y = 0 of the gap's
 //! coordinate, k integer, placed as the gap's strip_alignment says (grid_alignment.hpp: CONTACT's conventions, so
-//! that strips line up with its rows). The gap is resampled at the strip centres: h by cubic Hermite interpolation with 3-point slopes
-//! (exact for piecewise quadratics), A and B linearly.
+//! that strips line up with its rows). The gap is resampled at the strip centres: h by cubic Hermite interpolation
+//! with 3-point slopes (exact for piecewise quadratics), A and B linearly.
 #include <cstddef>
 #include <vector>
 
