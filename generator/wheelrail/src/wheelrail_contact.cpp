@@ -34,8 +34,13 @@ constexpr double kWheelPointTolerance_m = 1e-13;
 constexpr int kIntersectionSteps = 30;
 constexpr double kIntersectionTolerance_m = 1e-14;
 // Conformal surface: corrector passes that put a surface point midway between rail and wheel on its averaged
-// normal (the angle converges linearly; 4 passes move it by < 1e-9 rad on the Manchester flange root).
+// normal, until a pass moves the point by less than kSurfaceMove_m and turns the normal by less than
+// kSurfaceTurn_rad, at most kSurfacePasses. Measured (flange root, dy 6.5 mm): from the last sample's normal a pass
+// turns it by 7e-3, 5e-8, 2e-13 rad, then 0; from the normal extrapolated from the last two samples the first
+// turn is about 1e-5 rad. Chosen: 1e-12 rad and 1e-13 m, at round-off of the intersections (1e-14 m).
 constexpr int kSurfacePasses = 4;
+constexpr double kSurfaceMove_m = 1e-13;
+constexpr double kSurfaceTurn_rad = 1e-12;
 // Window sizing only: Hertz at the gap minimum with B >= A/20 (CONTACT's R_y <= 20 R_x) and a cosine floor for
 // steep flanks (cos 87 deg); 0.1 mm when Hertz fails.
 constexpr double kCurvatureRatioLimit = 20.0;
@@ -199,6 +204,7 @@ class PatchBuilder {
     NormalLine line;    // conformal: the last sample's normal through its surface point
     double s = 0;       // conformal: its arc length
     double s_at_y = 0;  // conformal: the wheel parameter at the surface point's own y (midway's Newton guess)
+    double turn = 0;    // conformal: how far the normal turned from the sample before to the last one [rad]
   };
 
   static std::vector<std::vector<double>*> columns(PatchProblem& p) {
@@ -209,7 +215,7 @@ class PatchBuilder {
   }
 
   void sample_side(PatchProblem& p, int direction, double depth, double step) const {
-    SampleState state{0, 0, p.reference.wheel_s_m, {p.y0, p.z0, p.c, p.sn}, 0.0, p.reference.wheel_s_m};
+    SampleState state{0, 0, p.reference.wheel_s_m, {p.y0, p.z0, p.c, p.sn}, 0.0, p.reference.wheel_s_m, 0.0};
     if (surface_ == ContactSurface::Conformal && !centre_on_surface(p, state)) return;
     // Planar samples are equally spaced: each Newton starts from the last two samples' solutions extrapolated
     // (from the last one alone they took one step more).
@@ -268,15 +274,19 @@ class PatchBuilder {
   }
 
   // Conformal: the reference surface point at arc length s_prev + ds (ds = 0: the reference point itself), by a
-  // predictor along the last tangent and corrector passes that put the point midway between rail and wheel on its
-  // own normal, whose inclination is the mean of the two profile inclinations there (CONTACT's averaged normal).
+  // predictor (the normal turned on as over the last step, the point moved along the chord's direction) and
+  // corrector passes that put the point midway between rail and wheel on its own normal, whose inclination is the
+  // mean of the two profile inclinations there (CONTACT's averaged normal).
   bool conformal_sample(const PatchProblem& p, double ds, SampleState& state, Sample& out) const {
     NormalLine line = state.line;
-    line.y += ds * line.c;  // tangent (c, sn)
-    line.z += ds * line.sn;
+    const double last_angle = std::atan2(line.sn, line.c);
+    const double chord_angle = last_angle + 0.5 * state.turn, predicted = last_angle + state.turn;
+    line.y += ds * std::cos(chord_angle);
+    line.z += ds * std::sin(chord_angle);
+    line.c = std::cos(predicted);
+    line.sn = std::sin(predicted);
     WheelSurfacePoint w{};
-    for (int pass = 0; pass < kSurfacePasses; ++pass)
-      if (!midway(line, p.gap_dz, state, w)) return false;
+    if (!settle_midway(line, p.gap_dz, state, w)) return false;
     if (!intersect(line, p.gap_dz, state, w)) return false;  // h along the final normal
     const double chord = std::hypot(line.y - state.line.y, line.z - state.line.z);
     out.s = state.s + (ds < 0 ? -chord : chord);
@@ -284,6 +294,7 @@ class PatchBuilder {
     state.line = line;
     out.y_rail = line.y;  // the surface point's rail y (CONTACT's y_rail of a row)
     out.angle = std::atan2(line.sn, line.c);
+    if (ds != 0.0) state.turn = out.angle - last_angle;
     fill_strip_geometry(w, state, line, out);
     return true;
   }
@@ -292,27 +303,41 @@ class PatchBuilder {
   // normal, started from the rail point; the sampling then marches from it.
   bool centre_on_surface(const PatchProblem& p, SampleState& state) const {
     WheelSurfacePoint w{};
-    for (int pass = 0; pass < kSurfacePasses; ++pass)
-      if (!midway(state.line, p.gap_dz, state, w)) return false;
+    if (!settle_midway(state.line, p.gap_dz, state, w)) return false;
     state.s = 0.0;
     return true;
   }
 
-  // One corrector pass: intersects `line` with both profiles, moves its point to the midpoint and turns it to the
+  // Corrector passes (midway) until the point and its normal stand still (kSurfaceMove_m, kSurfaceTurn_rad).
+  bool settle_midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
+    double angle = std::atan2(line.sn, line.c);
+    for (int pass = 0; pass < kSurfacePasses; ++pass) {
+      const double before = angle;
+      double moved = 0.0;
+      if (!midway(line, dz, state, w, moved, angle)) return false;
+      if (std::abs(moved) < kSurfaceMove_m && std::abs(angle - before) < kSurfaceTurn_rad) break;
+    }
+    return true;
+  }
+
+  // One corrector pass (`moved`: how far the point moved along the normal [m]; `angle`: the new normal's inclination
+  // [rad]): intersects `line` with both profiles, moves its point to the midpoint and turns it to the
   // mean of the rail's and the wheel's inclination at the point's own rail y (keeps n_rail, n_wheel relative to the
   // moved point): CONTACT's rule, read off its rows (at its reference row, y -42.2747 mm, the local angle -69.563 deg
   // is the mean of the rail's -69.126 and the wheel flank's -70.0 deg there). Taken where the normal meets each
   // profile instead, the rail's 13 mm arc was read 0.09 mm further along and 1.1 deg steeper: the flank's force
   // direction -0.59 deg from CONTACT's, its lateral force +8.6 % of FZ (README "Which inclinations make the normal").
-  bool midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
+  bool midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w, double& moved,
+              double& angle) const {
     if (!intersect(line, dz, state, w)) return false;
     const double mid = 0.5 * (state.n_rail + state.n_wheel);
+    moved = mid;
     line.y -= mid * line.sn;
     line.z += mid * line.c;
     state.n_rail -= mid;
     state.n_wheel -= mid;
     const double rail_angle = std::atan(side_.rail().at(line.y).dz);
-    const double angle = 0.5 * (rail_angle + std::atan(wheel_at(line.y, state.s_at_y).slope));
+    angle = 0.5 * (rail_angle + std::atan(wheel_at(line.y, state.s_at_y).slope));
     line.c = std::cos(angle);
     line.sn = std::sin(angle);
     return true;
