@@ -153,6 +153,14 @@ struct NormalLine {
   double y = 0, z = 0, c = 1, sn = 0;
 };
 
+// y at `at`, linear in the increasing x (extrapolated from the end segments).
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  const auto upper = std::upper_bound(x.begin(), x.end(), at);
+  const std::size_t i = std::clamp<std::size_t>(static_cast<std::size_t>(upper - x.begin()), 1, x.size() - 1);
+  const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
+  return (1 - t) * y[i - 1] + t * y[i];
+}
+
 class PatchBuilder {
  public:
   PatchBuilder(const SideGeometry& side, double dy, double roll, double z_first, ContactSurface surface,
@@ -265,11 +273,8 @@ class PatchBuilder {
   // surface instead, which on the flank (69 deg, the surface 0.05 mm inside the rail) lies 0.13 mm further along
   // the surface: the strips sat 2/3 of a row off CONTACT's.
   static void start_arc_length_at_reference_y(PatchProblem& p) {
-    const std::vector<double>& y = p.rail_y;
-    if (y.size() < 2 || !(p.y0 > y.front() && p.y0 < y.back())) return;
-    const auto upper = static_cast<std::size_t>(std::upper_bound(y.begin(), y.end(), p.y0) - y.begin());
-    const double t = (p.y0 - y[upper - 1]) / (y[upper] - y[upper - 1]);
-    const double origin = (1 - t) * p.gap.y_m[upper - 1] + t * p.gap.y_m[upper];
+    if (p.rail_y.size() < 2 || !(p.y0 > p.rail_y.front() && p.y0 < p.rail_y.back())) return;
+    const double origin = interpolate(p.rail_y, p.gap.y_m, p.y0);
     for (double& s : p.gap.y_m) s -= origin;
   }
 
@@ -413,13 +418,6 @@ class PatchBuilder {
   ContactSurface surface_;
   GridAlignment strips_;
 };
-
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  const auto upper = std::upper_bound(x.begin(), x.end(), at);
-  const std::size_t i = std::clamp<std::size_t>(static_cast<std::size_t>(upper - x.begin()), 1, x.size() - 1);
-  const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
-  return (1 - t) * y[i - 1] + t * y[i];
-}
 
 // Expected normal approach from Hertz with the curvatures at the gap minimum (window sizing only).
 double expected_approach(const SideGeometry& side, const GapMinimum& m, double dy, double roll, double E_star,
