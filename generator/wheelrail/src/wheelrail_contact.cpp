@@ -41,6 +41,10 @@ constexpr double kIntersectionTolerance_m = 1e-14;
 constexpr int kSurfacePasses = 4;
 constexpr double kSurfaceMove_m = 1e-13;
 constexpr double kSurfaceTurn_rad = 1e-12;
+// A last pass that turned the normal by less than this leaves the intersections where they are to n x turn x the
+// profiles' slope relative to the normal line (< 1e-4 m x 1e-9 x 0.1 = 1e-14 m): h is not re-intersected along
+// the final normal (settle_midway). Chosen.
+constexpr double kReintersectTurn_rad = 1e-9;
 // Window sizing only: Hertz at the gap minimum with B >= A/20 (CONTACT's R_y <= 20 R_x) and a cosine floor for
 // steep flanks (cos 87 deg); 0.1 mm when Hertz fails.
 constexpr double kCurvatureRatioLimit = 20.0;
@@ -101,6 +105,12 @@ constexpr double kMaxGapSlope = 0.8;
 // tables were validated) keeps the edges at the origin.
 GridAlignment strip_alignment(const WheelRailOptions& options) {
   return options.reference_at_interpenetration_centre ? GridAlignment::CentresAtOrigin : GridAlignment::EdgesAtOrigin;
+}
+
+// Whether two reference points are the same point (every field equal: a patch built at either is the same).
+bool same_point(const GapMinimum& a, const GapMinimum& b) {
+  return a.wheel_s_m == b.wheel_s_m && a.rail_y_m == b.rail_y_m && a.gap_m == b.gap_m &&
+         a.contact_angle_rad == b.contact_angle_rad && a.rolling_radius_m == b.rolling_radius_m;
 }
 
 std::string number_text(double value) {
@@ -174,8 +184,8 @@ class PatchBuilder {
   WheelSurfacePoint wheel_at(double y, double& s_guess) const {
     WheelSurfacePoint w = side_.wheel_point(s_guess, dy_, cos_roll_, sin_roll_);
     for (int i = 0; i < kWheelPointSteps && std::abs(w.rail_y_m - y) > kWheelPointTolerance_m; ++i) {
-      const double dyds = cos_roll_ - side_.wheel().at(s_guess).dz * sin_roll_;
-      s_guess -= (w.rail_y_m - y) / dyds;
+      // d rail_y / dS = 1 / (cos(roll) + slope sin(roll)), slope the track-frame slope (intersect_wheel)
+      s_guess -= (w.rail_y_m - y) * (cos_roll_ + w.slope * sin_roll_);
       w = side_.wheel_point(s_guess, dy_, cos_roll_, sin_roll_);
     }
     w.z_m += z_first_;
@@ -291,8 +301,10 @@ class PatchBuilder {
     line.c = std::cos(predicted);
     line.sn = std::sin(predicted);
     WheelSurfacePoint w{};
-    if (!settle_midway(line, p.gap_dz, state, w)) return false;
-    if (!intersect(line, p.gap_dz, state, w)) return false;  // h along the final normal
+    double last_turn = 0.0;
+    if (!settle_midway(line, p.gap_dz, state, w, last_turn)) return false;
+    if (last_turn >= kReintersectTurn_rad && !intersect(line, p.gap_dz, state, w))
+      return false;  // along the final normal
     const double chord = std::hypot(line.y - state.line.y, line.z - state.line.z);
     out.s = state.s + (ds < 0 ? -chord : chord);
     state.s = out.s;
@@ -308,19 +320,29 @@ class PatchBuilder {
   // normal, started from the rail point; the sampling then marches from it.
   bool centre_on_surface(const PatchProblem& p, SampleState& state) const {
     WheelSurfacePoint w{};
-    if (!settle_midway(state.line, p.gap_dz, state, w)) return false;
+    double last_turn = 0.0;
+    if (!settle_midway(state.line, p.gap_dz, state, w, last_turn)) return false;
     state.s = 0.0;
     return true;
   }
 
-  // Corrector passes (midway) until the point and its normal stand still (kSurfaceMove_m, kSurfaceTurn_rad).
-  bool settle_midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
+  // Corrector passes (midway) until the point and its normal stand still (kSurfaceMove_m, kSurfaceTurn_rad);
+  // `last_turn`: how far the last pass turned the normal [rad].
+  bool settle_midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w, double& last_turn) const {
     double angle = std::atan2(line.sn, line.c);
+    double previous_move = 0.0, previous_turn = 0.0;
     for (int pass = 0; pass < kSurfacePasses; ++pass) {
       const double before = angle;
       double moved = 0.0;
       if (!midway(line, dz, state, w, moved, angle)) return false;
-      if (std::abs(moved) < kSurfaceMove_m && std::abs(angle - before) < kSurfaceTurn_rad) break;
+      const double move = std::abs(moved), turn = std::abs(angle - before);
+      last_turn = turn;
+      if (move < kSurfaceMove_m && turn < kSurfaceTurn_rad) break;
+      // The passes contract geometrically: the next would move the point by about move^2 / previous_move.
+      if (pass > 0 && move * move < kSurfaceMove_m * previous_move && turn * turn < kSurfaceTurn_rad * previous_turn)
+        break;
+      previous_move = move;
+      previous_turn = turn;
     }
     return true;
   }
@@ -665,9 +687,15 @@ class WheelCase {
     double settled_force = 0.0, settled_vertical = 0.0;  // the last pass with x settled
     double previous_angle = main.angle;
     int retries = 0;
+    bool held = false;  // the last pass held x (conformal): its gap is still the one sampled
     for (int pass = 0; pass < kGapPasses; ++pass) {
+      const GapMinimum sampled_reference = main.reference;
       if (!fixed_sampling && pass < kCentreFollowingPasses) follow_interpenetration_centre(main);
-      if (!build_main(main, depth)) return SolveStatus::InvalidInput;
+      // A held pass samples at the same approach and reference point as the last: the same gap, so it is not
+      // re-sampled (29 % of the conformal default table's samplings).
+      const bool same_sampling = held && same_point(sampled_reference, main.reference);
+      held = false;
+      if (!same_sampling && !build_main(main, depth)) return SolveStatus::InvalidInput;
       // A plane carries the vertical load exactly as F cos(angle): at the first pass, and whenever the plane followed
       // the interpenetration centre to a new angle.
       const bool planar = options_.surface == ContactSurface::Planar;
@@ -726,6 +754,7 @@ class WheelCase {
       // passes without balancing to 1e-10, 370 of 576 240 sweep cases); the next pass checks that x is still settled.
       // (A plane carries F cos(angle) exactly; planar tables are unchanged by this.)
       if (!planar && settled && std::abs(vertical - value_) <= kHoldSamplingWindow * value_) {
+        held = true;
         shift_pass_start(main, 0.0, next_force - force);
         previous_x = main.gap_dz;
         previous_dz = dz;
