@@ -90,10 +90,28 @@ void Mim1dSolver::reset(const GapProfile& gap) {
   compliance_approach_ = std::numeric_limits<double>::quiet_NaN();
   active_.clear();
   active_.reserve(n);
+  load_weight_.clear();
   column_h_.resize(n + 1);
   column_q_.resize(n + 1);
   column_g_.resize(n + 1);
   column_j_.resize(n + 1);
+}
+
+void Mim1dSolver::set_load_weights(const std::vector<double>& weights) {
+  if (!weights.empty() && weights.size() != grid_.size())
+    throw InputError("MIM-1D load weights", 0,
+                     std::to_string(weights.size()) + " weights for " + std::to_string(grid_.size()) + " strips");
+  for (const double w : weights)
+    if (!(w > 0.0 && std::isfinite(w)))
+      throw InputError("MIM-1D load weights", 0, "a weight is not positive and finite: " + std::to_string(w));
+  load_weight_ = weights;
+}
+
+double Mim1dSolver::load_sum(const Eigen::VectorXd& v) const {
+  if (load_weight_.empty()) return v.sum();
+  double sum = 0.0;
+  for (Eigen::Index r = 0; r < v.size(); ++r) sum += load_weight_[active_[static_cast<std::size_t>(r)]] * v(r);
+  return sum;
 }
 
 void Mim1dSolver::update_lengths() {
@@ -369,9 +387,9 @@ bool Mim1dSolver::admit_violators(double approach_m, std::size_t& growth) {
 bool Mim1dSolver::newton_step(const InnerState& state, double force_mismatch, double& next_approach) {
   factorisation_.compute(jacobian_);
   next_loads_ = active_loads_ - factorisation_.solve(residual_);
-  if (state.target_load_N) {  // bordered system: J dN - d(delta) v = -R,  1^T dN = -F (v: approach_column_)
+  if (state.target_load_N) {  // bordered system: J dN - d(delta) v = -R,  w^T dN = -F (v: approach_column_)
     slope_ = factorisation_.solve(approach_column_);
-    const double d_approach = (-force_mismatch - (next_loads_ - active_loads_).sum()) / slope_.sum();
+    const double d_approach = (-force_mismatch - load_sum(next_loads_ - active_loads_)) / load_sum(slope_);
     next_loads_ += d_approach * slope_;
     next_approach = state.approach_m + d_approach;
   }
@@ -380,10 +398,10 @@ bool Mim1dSolver::newton_step(const InnerState& state, double force_mismatch, do
 
 void Mim1dSolver::fixed_point_step(const InnerState& state, double& next_approach) {
   factorisation_.compute(influence_);  // G, built with the Jacobian in this iteration (build_matrices)
-  if (state.target_load_N) {           // G N - delta 1 = -h,  1^T N = target
+  if (state.target_load_N) {           // G N - delta 1 = -h,  w^T N = target
     next_loads_ = factorisation_.solve(rhs_ - state.approach_m * ones_);  // G^-1 (-h)
     slope_ = factorisation_.solve(ones_);
-    next_approach = (*state.target_load_N - next_loads_.sum()) / slope_.sum();
+    next_approach = (*state.target_load_N - load_sum(next_loads_)) / load_sum(slope_);
     next_loads_ += next_approach * slope_;
   } else {
     next_loads_ = factorisation_.solve(rhs_);
@@ -440,7 +458,7 @@ Mim1dSolver::IterationOutcome Mim1dSolver::iterate(InnerState& state, InnerResul
   const bool newton = options_.update == Mim1dUpdate::Newton;
   build_matrices(newton ? MatrixKind::Jacobian : MatrixKind::Influence, true);
   gather_active_system(state.approach_m);
-  const double force_mismatch = state.target_load_N ? active_loads_.sum() - *state.target_load_N : 0.0;
+  const double force_mismatch = state.target_load_N ? load_sum(active_loads_) - *state.target_load_N : 0.0;
   residual_ = displacement_ - rhs_;
   result.residual = residual_.cwiseAbs().maxCoeff() / depth;
   if (!std::isfinite(result.residual)) return IterationOutcome::Failed;
@@ -564,8 +582,10 @@ double Mim1dSolver::hertz_start_approach(double normal_force_N) const {
   const auto deepest =
       static_cast<std::size_t>(std::min_element(grid_.h_m.begin(), grid_.h_m.end()) - grid_.h_m.begin());
   const double A0 = grid_.A_per_m[deepest];
+  // With load weights the prescribed load is sum w_i N_i: the normal force about that over the deepest strip's w.
+  const double force = load_weight_.empty() ? normal_force_N : normal_force_N / load_weight_[deepest];
   const HertzContact hertz =
-      hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / kCurvatureRatioLimit), E_star_Pa_, normal_force_N);
+      hertz_from_load(A0, std::max(grid_.B_per_m[deepest], A0 / kCurvatureRatioLimit), E_star_Pa_, force);
   return grid_.h_m[deepest] + (hertz.status == SolveStatus::Converged ? hertz.approach_m : kFallbackStartApproach_m);
 }
 
@@ -625,8 +645,8 @@ std::optional<double> Mim1dSolver::approach_sensitivity(const std::vector<double
       dh_m.size() != grid_.size())
     return std::nullopt;
   const Eigen::VectorXd dh = active_gap_change(dh_m);
-  const double unit = factorisation_.solve(approach_column_).sum();
-  const double change = (load_change_N + factorisation_.solve(dh).sum()) / unit;
+  const double unit = load_sum(factorisation_.solve(approach_column_));
+  const double change = (load_change_N + load_sum(factorisation_.solve(dh))) / unit;
   if (!std::isfinite(change)) return std::nullopt;
   return change;
 }
@@ -640,7 +660,7 @@ bool Mim1dSolver::shift_warm_start(const std::vector<double>& dh_m, double load_
   const Eigen::VectorXd dh = active_gap_change(dh_m);
   const Eigen::VectorXd unit = factorisation_.solve(approach_column_);
   const Eigen::VectorXd shift = factorisation_.solve(dh);
-  const double d_approach = (load_change_N + shift.sum()) / unit.sum();
+  const double d_approach = (load_change_N + load_sum(shift)) / load_sum(unit);
   if (!std::isfinite(d_approach)) return false;
   for (Eigen::Index r = 0; r < n; ++r) {
     double& load = start.loads_N[active_[static_cast<std::size_t>(r)] - active_.front()];
@@ -760,7 +780,12 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWar
       solution = make_solution(inner.status, approach);
       solution.iterations = iterations;
       solution.outer_iterations = 1;
-      solution.residual = std::abs(solution.normal_load_N - normal_force_N) / normal_force_N;
+      double prescribed = solution.normal_load_N;
+      if (!load_weight_.empty()) {
+        prescribed = 0.0;
+        for (const std::size_t i : active_) prescribed += load_weight_[i] * load_[i];
+      }
+      solution.residual = std::abs(prescribed - normal_force_N) / normal_force_N;
     }
   }
   if (solution.status != SolveStatus::Converged && solution.status != SolveStatus::ZoneTruncated)
@@ -811,16 +836,16 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     if (inner.status != SolveStatus::Converged) return finish(inner.status, approach, outer, inner.residual);
     update_lengths();
     double force = 0.0;
-    for (const std::size_t i : active_) force += load_[i];
+    for (const std::size_t i : active_) force += (load_weight_.empty() ? 1.0 : load_weight_[i]) * load_[i];
     const double mismatch = force - normal_force_N;
     const double force_residual = std::abs(mismatch) / normal_force_N;
     if (force_residual <= tolerance_) return finish(SolveStatus::Converged, approach, outer, force_residual);
     (mismatch < 0.0 ? lower : upper) = approach;
-    // Newton on delta with dN/d(delta) = 1^T J^-1 1 from the last factorisation.
+    // Newton on delta with dN/d(delta) = w^T J^-1 1 from the last factorisation.
     const auto n = static_cast<Eigen::Index>(active_.size());
     ones.setOnes(n);
     slope_vector = factorisation_.rows() == n ? Eigen::VectorXd(factorisation_.solve(ones)) : Eigen::VectorXd();
-    const double slope = slope_vector.size() == n ? slope_vector.sum() : 0.0;
+    const double slope = slope_vector.size() == n ? load_sum(slope_vector) : 0.0;
     double next = (slope > 0.0 && std::isfinite(slope)) ? approach - mismatch / slope : eq16(force);
     if (!(next > lower && next < upper)) {
       next = std::isfinite(upper) ? 0.5 * (lower + upper) : eq16(force);

@@ -137,6 +137,7 @@ struct PatchProblem {
   // cos(delta_w - alpha) (intersect_wheel's Newton: f = z_w(y - n sn) + dz - z - n c); for gap_slope.
   std::vector<double> approach_weight;
   std::vector<double> strip_gap_rate;  // scratch (gap_slope): d h_i / d gap_dz at each strip of the solver's grid
+  std::vector<double> load_weight;     // scratch: cos of each strip's normal inclination (vertical_load_weights)
   std::unique_ptr<Mim1dSolver> solver;
   NormalSolution solution;
 };
@@ -679,6 +680,10 @@ class WheelCase {
                   : !from_hertz  ? start_x
                                  : expected_approach(side_, main.reference, dy_, roll_, E_star_, load_, value_) /
                                       std::max(std::cos(main.reference.contact_angle_rad), kCosineFloor);
+    // MIM-1D on a conformal surface under a vertical load prescribes the vertical load itself (the strips' loads
+    // weighted by the cosines of their normals, vertical_load_weights): no secant on the normal force, whose share
+    // carried vertically a conformal patch does not know beforehand (one held pass in nearly every case before).
+    const bool vertical_weighted = weighted_vertical_load();
     double force = value_;
     // Fixed point x = dz(x, F) on the sampling approach x, F then rescaled to the vertical load: the next x solves
     // x = dz_pred + slope (x - x_k), dz_pred = dz_k (F_next/F_k)^(2/3) (Hertz: dz ~ F^(2/3)), slope = d dz/dx
@@ -700,7 +705,7 @@ class WheelCase {
       // the interpenetration centre to a new angle.
       const bool planar = options_.surface == ContactSurface::Planar;
       if (load_ == LoadKind::VerticalForce && (pass == 0 || (planar && main.angle != previous_angle)))
-        force = value_ / main.c;
+        force = vertical_weighted ? value_ : value_ / main.c;
       previous_angle = main.angle;
       const bool predictor = pass == 0 && from_hertz && !fixed_sampling;
       // A re-solve at a new centre (recentre_main_patch) starts from the last pass: the same contact, its loads moved
@@ -734,8 +739,8 @@ class WheelCase {
       // takes the ratio step (the share of the load carried vertically hardly depends on x), not recorded for the
       // secant.
       double next_force = force;
-      if (predictor && vertical > 0.0) next_force = force * value_ / vertical;
-      if (settled && vertical > 0.0) {
+      if (predictor && vertical > 0.0 && !vertical_weighted) next_force = force * value_ / vertical;
+      if (settled && vertical > 0.0 && !vertical_weighted) {
         next_force = force * value_ / vertical;
         if (settled_force > 0.0 && vertical != settled_vertical) {
           const double secant = force + (value_ - vertical) * (force - settled_force) / (vertical - settled_vertical);
@@ -753,7 +758,7 @@ class WheelCase {
       // re-predicting x at every step left the secant on noise (CONTACT's rule, dy 6.65-6.82 mm, vertical load: 60
       // passes without balancing to 1e-10, 370 of 576 240 sweep cases); the next pass checks that x is still settled.
       // (A plane carries F cos(angle) exactly; planar tables are unchanged by this.)
-      if (!planar && settled && std::abs(vertical - value_) <= kHoldSamplingWindow * value_) {
+      if (!planar && !vertical_weighted && settled && std::abs(vertical - value_) <= kHoldSamplingWindow * value_) {
         held = true;
         shift_pass_start(main, 0.0, next_force - force);
         previous_x = main.gap_dz;
@@ -839,6 +844,7 @@ class WheelCase {
     if (options_.method != NormalMethod::Mim1d) {
       main.solution = solve_other_rung(main, Loading::normal_force(force));
     } else {
+      if (weighted_vertical_load()) set_vertical_load_weights(main);
       static const Mim1dWarmStart cold;
       const Mim1dWarmStart& start = from_previous_pass ? pass_start_here(main)
                                     : warm_ != nullptr ? ws_.chain_start
@@ -865,6 +871,20 @@ class WheelCase {
     const double shift_m = (main.y0 - saved.origin_y_m) / std::cos(0.5 * (main.angle + saved.origin_angle_rad));
     move_warm_start_origin(saved, shift_m, options_.mim1d.strip_width_m, ws_.moved_start);
     return ws_.moved_start;
+  }
+
+  bool weighted_vertical_load() const {
+    return options_.method == NormalMethod::Mim1d && options_.surface == ContactSurface::Conformal &&
+           load_ == LoadKind::VerticalForce;
+  }
+
+  // The main patch's solver prescribes sum N_i cos(alpha_i), alpha_i each strip's normal as run_force takes it.
+  void set_vertical_load_weights(PatchProblem& main) {
+    const StripGrid& grid = main.solver->grid();
+    main.load_weight.resize(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      main.load_weight[i] = std::max(std::cos(interpolate(main.gap.y_m, main.normal_angle, grid.y_m[i])), kCosineFloor);
+    main.solver->set_load_weights(main.load_weight);
   }
 
   ForceComponents solution_force(const PatchProblem& p) const {

@@ -47,9 +47,15 @@ class Mim1dSolver {
   //! reused case after case allocates only when a case needs more strips than any before. Throws InputError.
   void reset(const GapProfile& gap);
 
+  //! Weights w_i [-] of the strips' loads in the prescribed load of solve_for_load, which is then sum_i w_i N_i [N]
+  //! (a wheel-rail conformal patch: w_i = cos of strip i's normal inclination, so that the prescribed load is the
+  //! vertical one); one per strip of grid(), each > 0 and finite; empty: all 1 (the normal force). reset() clears
+  //! them. Throws InputError on a wrong count or value.
+  void set_load_weights(const std::vector<double>& weights);
+
   //! Solve for a prescribed rigid approach delta [m] (same datum as the gap's h).
   [[nodiscard]] NormalSolution solve_for_approach(double approach_m);
-  //! Solve for a prescribed total normal force [N].
+  //! Solve for a prescribed total normal force [N] (with load weights: sum_i w_i N_i, set_load_weights).
   [[nodiscard]] NormalSolution solve_for_load(double normal_force_N);
   //! The same, started from `start` (a neighbouring gap's solution; empty: cold). Strips of `start` that carry
   //! load and interpenetrate at its depth form the starting set; should the warm solve fail, the cold solve runs
@@ -73,7 +79,7 @@ class Mim1dSolver {
 
   //! First-order change of the last solve's approach [m] when every strip's separation changes by dh_m[i] (one
   //! entry per strip of grid()) and the total load by load_change_N: the bordered system at the solution,
-  //! J dN - d(delta) v = -dh and 1^T dN = dF, gives d(delta) = (dF + 1^T J^-1 dh) / 1^T J^-1 v (v = -dR/d(delta):
+  //! J dN - d(delta) v = -dh and w^T dN = dF (w: the load weights, or 1), gives d(delta) = (dF + w^T J^-1 dh) / w^T J^-1 v (v = -dR/d(delta):
   //! 1, less the smoothed compliances' approach term in a load-prescribed solve), here from the last
   //! Jacobian factorisation of the solve (a prediction only: that of the step before convergence). Empty when it
   //! does not match the active set (fixed-point update, or no contact).
@@ -151,6 +157,8 @@ class Mim1dSolver {
   [[nodiscard]] long first_strip_index() const noexcept;
   //! Approach of Hertz at the deepest strip for the given load (the paper's starting value) [m].
   [[nodiscard]] double hertz_start_approach(double normal_force_N) const;
+  //! sum_r w(active_[r]) v(r) over the active set (v one entry per active strip): the prescribed load's measure.
+  [[nodiscard]] double load_sum(const Eigen::VectorXd& v) const;
   void update_lengths();
   enum class MatrixKind { Influence, Jacobian };
   //! Fills G, or the Jacobian and G together (a Newton step that unloads a strip falls back to G in the same
@@ -179,6 +187,7 @@ class Mim1dSolver {
   double compliance_approach_ = std::numeric_limits<double>::quiet_NaN();  // delta they were computed for
   std::vector<double> scratch_;
   std::vector<double> load_;                 // N_i [N] (all strips; 0 outside the active set)
+  std::vector<double> load_weight_;          // w_i of the prescribed load (all strips), empty: all 1
   std::vector<double> length_;               // a_i [m] (all strips)
   std::vector<std::size_t> active_;          // strips in contact, increasing
   std::vector<std::size_t> violators_;       // strips that interpenetrate after deformation (scratch)
