@@ -45,6 +45,9 @@ constexpr double kSurfaceTurn_rad = 1e-12;
 // profiles' slope relative to the normal line (< 1e-4 m x 1e-9 x 0.1 = 1e-14 m): h is not re-intersected along
 // the final normal (settle_midway). Chosen.
 constexpr double kReintersectTurn_rad = 1e-9;
+// A pass whose turn would move the point by less than kSurfaceMove_m / kNextMoveMargin on the next pass (first order,
+// settle_midway's next_move) is the last. Chosen: 10, for the slopes taken where the last Newton steps evaluated them.
+constexpr double kNextMoveMargin = 10.0;
 // Window sizing only: Hertz at the gap minimum with B >= A/20 (CONTACT's R_y <= 20 R_x) and a cosine floor for
 // steep flanks (cos 87 deg); 0.1 mm when Hertz fails.
 constexpr double kCurvatureRatioLimit = 20.0;
@@ -220,10 +223,13 @@ class PatchBuilder {
   // State carried from sample to sample along one side: Newton guesses and, conformal, the last surface point.
   struct SampleState {
     double n_rail = 0, n_wheel = 0, s_guess = 0;
-    NormalLine line;    // conformal: the last sample's normal through its surface point
-    double s = 0;       // conformal: its arc length
-    double s_at_y = 0;  // conformal: the wheel parameter at the surface point's own y (midway's Newton guess)
-    double turn = 0;    // conformal: how far the normal turned from the sample before to the last one [rad]
+    NormalLine line;         // conformal: the last sample's normal through its surface point
+    double s = 0;            // conformal: its arc length
+    double s_at_y = 0;       // conformal: the wheel parameter at the surface point's own y (midway's Newton guess)
+    double turn = 0;         // conformal: how far the normal turned from the sample before to the last one [rad]
+    double turn_before = 0;  // conformal: the same one sample earlier [rad]
+    int turns = 0;           // conformal: samples with a turn so far
+    double rail_slope = 0;   // the rail's slope dz/dy where the last intersection met it [-]
   };
 
   static std::vector<std::vector<double>*> columns(PatchProblem& p) {
@@ -296,7 +302,10 @@ class PatchBuilder {
   bool conformal_sample(const PatchProblem& p, double ds, SampleState& state, Sample& out) const {
     NormalLine line = state.line;
     const double last_angle = std::atan2(line.sn, line.c);
-    const double chord_angle = last_angle + 0.5 * state.turn, predicted = last_angle + state.turn;
+    // The turn extrapolated linearly from the last two turns: the second corrector pass then moves the point by
+    // 1e-14 to 1e-15 m in most samples, 1e-12 to 1e-13 m with the last turn repeated (conformal default table).
+    const double next_turn = state.turns >= 2 ? 2.0 * state.turn - state.turn_before : state.turn;
+    const double chord_angle = last_angle + 0.5 * next_turn, predicted = last_angle + next_turn;
     line.y += ds * std::cos(chord_angle);
     line.z += ds * std::sin(chord_angle);
     line.c = std::cos(predicted);
@@ -312,7 +321,11 @@ class PatchBuilder {
     state.line = line;
     out.y_rail = line.y;  // the surface point's rail y (CONTACT's y_rail of a row)
     out.angle = std::atan2(line.sn, line.c);
-    if (ds != 0.0) state.turn = out.angle - last_angle;
+    if (ds != 0.0) {
+      state.turn_before = state.turn;
+      state.turn = out.angle - last_angle;
+      ++state.turns;
+    }
     fill_strip_geometry(w, state, line, out);
     return true;
   }
@@ -330,15 +343,16 @@ class PatchBuilder {
   // Corrector passes (midway) until the point and its normal stand still (kSurfaceMove_m, kSurfaceTurn_rad);
   // `last_turn`: how far the last pass turned the normal [rad].
   bool settle_midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w, double& last_turn) const {
-    double angle = std::atan2(line.sn, line.c);
     double previous_move = 0.0, previous_turn = 0.0;
     for (int pass = 0; pass < kSurfacePasses; ++pass) {
-      const double before = angle;
+      const NormalLine before = line;
       double moved = 0.0;
-      if (!midway(line, dz, state, w, moved, angle)) return false;
-      const double move = std::abs(moved), turn = std::abs(angle - before);
+      if (!midway(line, dz, state, w, moved)) return false;
+      // |sin| of the turn between the two normals: the turn itself at the small turns the tolerances test.
+      const double move = std::abs(moved), turn = std::abs(before.c * line.sn - before.sn * line.c);
       last_turn = turn;
       if (move < kSurfaceMove_m && turn < kSurfaceTurn_rad) break;
+      if (kNextMoveMargin * next_move(before, state, w, turn) < kSurfaceMove_m) break;
       // The passes contract geometrically: the next would move the point by about move^2 / previous_move.
       if (pass > 0 && move * move < kSurfaceMove_m * previous_move && turn * turn < kSurfaceTurn_rad * previous_turn)
         break;
@@ -348,15 +362,27 @@ class PatchBuilder {
     return true;
   }
 
-  // One corrector pass (`moved`: how far the point moved along the normal [m]; `angle`: the new normal's inclination
-  // [rad]): intersects `line` with both profiles, moves its point to the midpoint and turns it to the
-  // mean of the rail's and the wheel's inclination at the point's own rail y (keeps n_rail, n_wheel relative to the
-  // moved point): CONTACT's rule, read off its rows (at its reference row, y -42.2747 mm, the local angle -69.563 deg
-  // is the mean of the rail's -69.126 and the wheel flank's -70.0 deg there). Taken where the normal meets each
-  // profile instead, the rail's 13 mm arc was read 0.09 mm further along and 1.1 deg steeper: the flank's force
-  // direction -0.59 deg from CONTACT's, its lateral force +8.6 % of FZ (README "Which inclinations make the normal").
-  bool midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w, double& moved,
-              double& angle) const {
+  // How far the next corrector pass would move the point, to first order in this pass's turn [m]: turning the line by
+  // theta about the midpoint moves each intersection, at n along the line on a profile of slope t relative to the
+  // line's tangent, by -n t theta, so the midpoint by -theta (n_rail t_rail + n_wheel t_wheel) / 2 = theta h
+  // (t_wheel - t_rail) / 4 (n_rail = -n_wheel = h / 2); plus the second order's bound |h| theta^2 / 4 (measured: the
+  // first pass from the rail point turns by 1e-2 rad, where the first order said 6e-15 m and the pass moved 2e-11 m).
+  // `line`: the line before the turn, at whose intersections `state` and `w` hold the slopes. (The turn that such a
+  // move causes, curvature x move, is below 1e-10 rad.)
+  static double next_move(const NormalLine& line, const SampleState& state, const WheelSurfacePoint& w, double turn) {
+    const auto relative = [&](double slope) { return (slope * line.c - line.sn) / (line.c + slope * line.sn); };
+    const double h = std::abs(state.n_rail - state.n_wheel);
+    return 0.25 * turn * h * (std::abs(relative(w.slope) - relative(state.rail_slope)) + turn);
+  }
+
+  // One corrector pass (`moved`: how far the point moved along the normal [m]): intersects `line` with both profiles,
+  // moves its point to the midpoint and turns it to the mean of the rail's and the wheel's inclination at the point's
+  // own rail y (keeps n_rail, n_wheel relative to the moved point): CONTACT's rule, read off its rows (at its reference
+  // row, y -42.2747 mm, the local angle -69.563 deg is the mean of the rail's -69.126 and the wheel flank's -70.0 deg
+  // there). Taken where the normal meets each profile instead, the rail's 13 mm arc was read 0.09 mm further along
+  // and 1.1 deg steeper: the flank's force direction -0.59 deg from CONTACT's, its lateral force +8.6 % of FZ (README
+  // "Which inclinations make the normal").
+  bool midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w, double& moved) const {
     if (!intersect(line, dz, state, w)) return false;
     const double mid = 0.5 * (state.n_rail + state.n_wheel);
     moved = mid;
@@ -364,10 +390,14 @@ class PatchBuilder {
     line.z += mid * line.c;
     state.n_rail -= mid;
     state.n_wheel -= mid;
-    const double rail_angle = std::atan(side_.rail().at(line.y).dz);
-    angle = 0.5 * (rail_angle + std::atan(wheel_at(line.y, state.s_at_y).slope));
-    line.c = std::cos(angle);
-    line.sn = std::sin(angle);
+    // The mean inclination's direction bisects the two profiles' unit tangents (1, slope) / |(1, slope)|.
+    const double rail_slope = side_.rail().at(line.y).dz, wheel_slope = wheel_at(line.y, state.s_at_y).slope;
+    const double rail_c = 1.0 / std::sqrt(1.0 + rail_slope * rail_slope),
+                 wheel_c = 1.0 / std::sqrt(1.0 + wheel_slope * wheel_slope);
+    const double c = rail_c + wheel_c, sn = rail_slope * rail_c + wheel_slope * wheel_c;
+    const double length = std::sqrt(c * c + sn * sn);
+    line.c = c / length;
+    line.sn = sn / length;
     return true;
   }
 
@@ -398,18 +428,19 @@ class PatchBuilder {
 
   // Rail and wheel (lowered by dz) along the line: Newton on n for each; false outside the profiles.
   bool intersect(const NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const {
-    if (!intersect_rail(line, state.n_rail)) return false;
+    if (!intersect_rail(line, state.n_rail, state.rail_slope)) return false;
     return intersect_wheel(line, dz, state, w);
   }
 
-  // Rail: z_r(y - n sn) = z + n c, Newton on n.
-  bool intersect_rail(const NormalLine& line, double& n_rail) const {
+  // Rail: z_r(y - n sn) = z + n c, Newton on n; `slope`: the rail's dz/dy at the last point evaluated.
+  bool intersect_rail(const NormalLine& line, double& n_rail, double& slope) const {
     const ProfileTable& rail = side_.rail();
     for (int i = 0; i < kIntersectionSteps; ++i) {
       const double y = line.y - n_rail * line.sn;
       if (!rail.contains(y)) return false;
       const ProfilePoint r = rail.at(y);
       const double f = r.z - (line.z + n_rail * line.c), df = -r.dz * line.sn - line.c;
+      slope = r.dz;
       n_rail -= f / df;
       if (std::abs(f) < kIntersectionTolerance_m) break;
     }
