@@ -45,6 +45,9 @@ constexpr double kSurfaceTurn_rad = 1e-12;
 // profiles' slope relative to the normal line (< 1e-4 m x 1e-9 x 0.1 = 1e-14 m): h is not re-intersected along
 // the final normal (settle_midway). Chosen.
 constexpr double kReintersectTurn_rad = 1e-9;
+// Below this last turn the intersections follow it to first order instead (settle_midway's turn_intersections: the
+// second order, n (t theta)^2 and curvature x (n theta)^2 / 2, below 1e-16 m). Chosen.
+constexpr double kFirstOrderTurn_rad = 1e-5;
 // A pass whose turn would move the point by less than kSurfaceMove_m / kNextMoveMargin on the next pass (first order,
 // settle_midway's next_move) is the last. Chosen: 10, for the slopes taken where the last Newton steps evaluated them.
 constexpr double kNextMoveMargin = 10.0;
@@ -313,7 +316,7 @@ class PatchBuilder {
     WheelSurfacePoint w{};
     double last_turn = 0.0;
     if (!settle_midway(line, p.gap_dz, state, w, last_turn)) return false;
-    if (last_turn >= kReintersectTurn_rad && !intersect(line, p.gap_dz, state, w))
+    if (last_turn >= kFirstOrderTurn_rad && !intersect(line, p.gap_dz, state, w))
       return false;  // along the final normal
     const double chord = std::hypot(line.y - state.line.y, line.z - state.line.z);
     out.s = state.s + (ds < 0 ? -chord : chord);
@@ -349,8 +352,12 @@ class PatchBuilder {
       double moved = 0.0;
       if (!midway(line, dz, state, w, moved)) return false;
       // |sin| of the turn between the two normals: the turn itself at the small turns the tolerances test.
-      const double move = std::abs(moved), turn = std::abs(before.c * line.sn - before.sn * line.c);
+      const double signed_turn = before.c * line.sn - before.sn * line.c;
+      const double move = std::abs(moved), turn = std::abs(signed_turn);
       last_turn = turn;
+      // A small last turn moves the intersections to first order (next_move): n -> n (1 - t theta); the
+      // sample then needs no re-intersection along the final normal (conformal_sample).
+      if (turn >= kReintersectTurn_rad && turn < kFirstOrderTurn_rad) turn_intersections(before, state, w, signed_turn);
       if (move < kSurfaceMove_m && turn < kSurfaceTurn_rad) break;
       if (kNextMoveMargin * next_move(before, state, w, turn) < kSurfaceMove_m) break;
       // The passes contract geometrically: the next would move the point by about move^2 / previous_move.
@@ -373,6 +380,14 @@ class PatchBuilder {
     const auto relative = [&](double slope) { return (slope * line.c - line.sn) / (line.c + slope * line.sn); };
     const double h = std::abs(state.n_rail - state.n_wheel);
     return 0.25 * turn * h * (std::abs(relative(w.slope) - relative(state.rail_slope)) + turn);
+  }
+
+  // The intersections after the line turned by theta about its point (first order, next_move): each n by -n t theta,
+  // t the profile's slope relative to the line before the turn.
+  static void turn_intersections(const NormalLine& line, SampleState& state, const WheelSurfacePoint& w, double theta) {
+    const auto relative = [&](double slope) { return (slope * line.c - line.sn) / (line.c + slope * line.sn); };
+    state.n_rail -= state.n_rail * relative(state.rail_slope) * theta;
+    state.n_wheel -= state.n_wheel * relative(w.slope) * theta;
   }
 
   // One corrector pass (`moved`: how far the point moved along the normal [m]): intersects `line` with both profiles,
