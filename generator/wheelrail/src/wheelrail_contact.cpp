@@ -729,7 +729,7 @@ class WheelCase {
     // MIM-1D on a conformal surface under a vertical load prescribes the vertical load itself (the strips' loads
     // weighted by the cosines of their normals, vertical_load_weights): no secant on the normal force, whose share
     // carried vertically a conformal patch does not know beforehand (one held pass in nearly every case before).
-    const bool vertical_weighted = weighted_vertical_load();
+    bool vertical_weighted = weighted_vertical_load();
     double force = value_;
     // Fixed point x = dz(x, F) on the sampling approach x, F then rescaled to the vertical load: the next x solves
     // x = dz_pred + slope (x - x_k), dz_pred = dz_k (F_next/F_k)^(2/3) (Hertz: dz ~ F^(2/3)), slope = d dz/dx
@@ -752,6 +752,13 @@ class WheelCase {
       const bool planar = options_.surface == ContactSurface::Planar;
       if (load_ == LoadKind::VerticalForce && (pass == 0 || (planar && main.angle != previous_angle)))
         force = vertical_weighted ? value_ : value_ / main.c;
+      // A strip whose normal leans beyond kCosineFloor carries too little of the vertical load to prescribe it by
+      // (none beyond 90 deg): this case balances it by the secant on the normal force instead.
+      if (vertical_weighted && !set_vertical_load_weights(main)) {
+        vertical_weighted = false;
+        main.solver->set_load_weights({});
+        force = value_ / main.c;
+      }
       previous_angle = main.angle;
       const bool predictor = pass == 0 && from_hertz && !fixed_sampling;
       // A re-solve at a new centre (recentre_main_patch) starts from the last pass: the same contact, its loads moved
@@ -890,7 +897,6 @@ class WheelCase {
     if (options_.method != NormalMethod::Mim1d) {
       main.solution = solve_other_rung(main, Loading::normal_force(force));
     } else {
-      if (weighted_vertical_load()) set_vertical_load_weights(main);
       static const Mim1dWarmStart cold;
       const Mim1dWarmStart& start = from_previous_pass ? pass_start_here(main)
                                     : warm_ != nullptr ? ws_.chain_start
@@ -924,13 +930,17 @@ class WheelCase {
            load_ == LoadKind::VerticalForce;
   }
 
-  // The main patch's solver prescribes sum N_i cos(alpha_i), alpha_i each strip's normal as run_force takes it.
-  void set_vertical_load_weights(PatchProblem& main) {
+  // The main patch's solver prescribes sum N_i cos(alpha_i), alpha_i each strip's normal as run_force takes it;
+  // false (nothing set) where a normal leans beyond kCosineFloor.
+  bool set_vertical_load_weights(PatchProblem& main) {
     const StripGrid& grid = main.solver->grid();
     main.load_weight.resize(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i)
-      main.load_weight[i] = std::max(std::cos(interpolate(main.gap.y_m, main.normal_angle, grid.y_m[i])), kCosineFloor);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      main.load_weight[i] = std::cos(interpolate(main.gap.y_m, main.normal_angle, grid.y_m[i]));
+      if (!(main.load_weight[i] > kCosineFloor)) return false;
+    }
     main.solver->set_load_weights(main.load_weight);
+    return true;
   }
 
   ForceComponents solution_force(const PatchProblem& p) const {
