@@ -143,7 +143,7 @@ struct PatchProblem {
   // cos(delta_w - alpha) (intersect_wheel's Newton: f = z_w(y - n sn) + dz - z - n c); for gap_slope.
   std::vector<double> approach_weight;
   std::vector<double> strip_gap_rate;  // scratch (gap_slope): d h_i / d gap_dz at each strip of the solver's grid
-  std::vector<double> load_weight;     // scratch: cos of each strip's normal inclination (vertical_load_weights)
+  std::vector<double> load_weight;     // scratch: cos of each strip's normal inclination (set_vertical_load_weights)
   std::unique_ptr<Mim1dSolver> solver;
   NormalSolution solution;
 };
@@ -377,17 +377,20 @@ class PatchBuilder {
   // `line`: the line before the turn, at whose intersections `state` and `w` hold the slopes. (The turn that such a
   // move causes, curvature x move, is below 1e-10 rad.)
   static double next_move(const NormalLine& line, const SampleState& state, const WheelSurfacePoint& w, double turn) {
-    const auto relative = [&](double slope) { return (slope * line.c - line.sn) / (line.c + slope * line.sn); };
     const double h = std::abs(state.n_rail - state.n_wheel);
-    return 0.25 * turn * h * (std::abs(relative(w.slope) - relative(state.rail_slope)) + turn);
+    return 0.25 * turn * h * (std::abs(relative_slope(line, w.slope) - relative_slope(line, state.rail_slope)) + turn);
   }
 
   // The intersections after the line turned by theta about its point (first order, next_move): each n by -n t theta,
   // t the profile's slope relative to the line before the turn.
   static void turn_intersections(const NormalLine& line, SampleState& state, const WheelSurfacePoint& w, double theta) {
-    const auto relative = [&](double slope) { return (slope * line.c - line.sn) / (line.c + slope * line.sn); };
-    state.n_rail -= state.n_rail * relative(state.rail_slope) * theta;
-    state.n_wheel -= state.n_wheel * relative(w.slope) * theta;
+    state.n_rail -= state.n_rail * relative_slope(line, state.rail_slope) * theta;
+    state.n_wheel -= state.n_wheel * relative_slope(line, w.slope) * theta;
+  }
+
+  // A profile's slope relative to the line's tangent (c, sn), dz/dy the profile's: tan(atan(dz/dy) - angle).
+  static double relative_slope(const NormalLine& line, double slope) {
+    return (slope * line.c - line.sn) / (line.c + slope * line.sn);
   }
 
   // One corrector pass (`moved`: how far the point moved along the normal [m]): intersects `line` with both profiles,
@@ -426,9 +429,7 @@ class PatchBuilder {
     // conformal, n is an offset from the curved surface, whose own curvature kappa_m adds to both surfaces' n''
     // and cancels in h'' = n_rail'' - n_wheel'' (offset curves: kappa(offset) = kappa_m + n'' for small n), so the
     // relative curvature is the difference of the two profile curvatures, not h'' of a flat plane.
-    // Slope relative to the line's tangent: tan(atan(z') - angle) = (z' cos - sin) / (cos + z' sin).
-    const double tr = (r.dz * line.c - line.sn) / (line.c + r.dz * line.sn),
-                 tw = (w.slope * line.c - line.sn) / (line.c + w.slope * line.sn);
+    const double tr = relative_slope(line, r.dz), tw = relative_slope(line, w.slope);
     const double gr = 1 + tr * tr, gw = 1 + tw * tw;
     out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
     out.h = state.n_rail - state.n_wheel;
@@ -727,7 +728,7 @@ class WheelCase {
                                  : expected_approach(side_, main.reference, dy_, roll_, E_star_, load_, value_) /
                                       std::max(std::cos(main.reference.contact_angle_rad), kCosineFloor);
     // MIM-1D on a conformal surface under a vertical load prescribes the vertical load itself (the strips' loads
-    // weighted by the cosines of their normals, vertical_load_weights): no secant on the normal force, whose share
+    // weighted by the cosines of their normals, set_vertical_load_weights): no secant on the normal force, whose share
     // carried vertically a conformal patch does not know beforehand (one held pass in nearly every case before).
     bool vertical_weighted = weighted_vertical_load();
     double force = value_;
