@@ -107,6 +107,12 @@ void Mim1dSolver::set_load_weights(const std::vector<double>& weights) {
   load_weight_ = weights;
 }
 
+double Mim1dSolver::prescribed_load() const {
+  double sum = 0.0;
+  for (const std::size_t i : active_) sum += (load_weight_.empty() ? 1.0 : load_weight_[i]) * load_[i];
+  return sum;
+}
+
 double Mim1dSolver::load_sum(const Eigen::VectorXd& v) const {
   if (load_weight_.empty()) return v.sum();
   double sum = 0.0;
@@ -780,12 +786,7 @@ NormalSolution Mim1dSolver::solve_for_load(double normal_force_N, const Mim1dWar
       solution = make_solution(inner.status, approach);
       solution.iterations = iterations;
       solution.outer_iterations = 1;
-      double prescribed = solution.normal_load_N;
-      if (!load_weight_.empty()) {
-        prescribed = 0.0;
-        for (const std::size_t i : active_) prescribed += load_weight_[i] * load_[i];
-      }
-      solution.residual = std::abs(prescribed - normal_force_N) / normal_force_N;
+      solution.residual = std::abs(prescribed_load() - normal_force_N) / normal_force_N;
     }
   }
   if (solution.status != SolveStatus::Converged && solution.status != SolveStatus::ZoneTruncated)
@@ -835,8 +836,7 @@ NormalSolution Mim1dSolver::solve_for_load_nested(double normal_force_N, int& it
     }
     if (inner.status != SolveStatus::Converged) return finish(inner.status, approach, outer, inner.residual);
     update_lengths();
-    double force = 0.0;
-    for (const std::size_t i : active_) force += (load_weight_.empty() ? 1.0 : load_weight_[i]) * load_[i];
+    const double force = prescribed_load();
     const double mismatch = force - normal_force_N;
     const double force_residual = std::abs(mismatch) / normal_force_N;
     if (force_residual <= tolerance_) return finish(SolveStatus::Converged, approach, outer, force_residual);

@@ -79,8 +79,9 @@ class Mim1dSolver {
 
   //! First-order change of the last solve's approach [m] when every strip's separation changes by dh_m[i] (one
   //! entry per strip of grid()) and the total load by load_change_N: the bordered system at the solution,
-  //! J dN - d(delta) v = -dh and w^T dN = dF (w: the load weights, or 1), gives d(delta) = (dF + w^T J^-1 dh) / w^T J^-1 v (v = -dR/d(delta):
-  //! 1, less the smoothed compliances' approach term in a load-prescribed solve), here from the last
+  //! J dN - d(delta) v = -dh and w^T dN = dF (w: the load weights, or 1), gives
+  //! d(delta) = (dF + w^T J^-1 dh) / w^T J^-1 v (v = -dR/d(delta): 1, less the smoothed compliances' approach term
+  //! in a load-prescribed solve; dF a change of the prescribed load, weighted alike), here from the last
   //! Jacobian factorisation of the solve (a prediction only: that of the step before convergence). Empty when it
   //! does not match the active set (fixed-point update, or no contact).
   [[nodiscard]] std::optional<double> approach_sensitivity(const std::vector<double>& dh_m,
@@ -159,6 +160,8 @@ class Mim1dSolver {
   [[nodiscard]] double hertz_start_approach(double normal_force_N) const;
   //! sum_r w(active_[r]) v(r) over the active set (v one entry per active strip): the prescribed load's measure.
   [[nodiscard]] double load_sum(const Eigen::VectorXd& v) const;
+  //! sum_i w_i N_i over the active set: the load that solve_for_load prescribes [N].
+  [[nodiscard]] double prescribed_load() const;
   void update_lengths();
   enum class MatrixKind { Influence, Jacobian };
   //! Fills G, or the Jacobian and G together (a Newton step that unloads a strip falls back to G in the same
