@@ -28,7 +28,7 @@ std::string bytes_of(const std::string& path) {
 }
 
 std::string temp_file(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("ctab_compression_" + name)).string();
+  return (std::filesystem::path(::testing::TempDir()) / ("ctab_compression_" + name)).string();
 }
 
 TEST(Compression, ConfigKeyDefaultAndRange) {
