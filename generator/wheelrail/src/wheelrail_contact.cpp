@@ -41,12 +41,9 @@ constexpr double kIntersectionTolerance_m = 1e-14;
 constexpr int kSurfacePasses = 4;
 constexpr double kSurfaceMove_m = 1e-13;
 constexpr double kSurfaceTurn_rad = 1e-12;
-// A last pass that turned the normal by less than this leaves the intersections where they are to n x turn x the
-// profiles' slope relative to the normal line (< 1e-4 m x 1e-9 x 0.1 = 1e-14 m): h is not re-intersected along
-// the final normal (settle_midway). Chosen.
-constexpr double kReintersectTurn_rad = 1e-9;
-// Below this last turn the intersections follow it to first order instead (settle_midway's turn_intersections: the
-// second order, n (t theta)^2 and curvature x (n theta)^2 / 2, below 1e-16 m). Chosen.
+// After a last pass that turned the normal by less than this the intersections follow the turn to first order instead
+// of a re-intersection along the final normal (settle_midway's turn_intersections: the second order,
+// n (t theta)^2 and curvature x (n theta)^2 / 2, below 1e-16 m). Chosen.
 constexpr double kFirstOrderTurn_rad = 1e-5;
 // A pass whose turn would move the point by less than kSurfaceMove_m / kNextMoveMargin on the next pass (first order,
 // settle_midway's next_move) is the last. Chosen: 10, for the slopes taken where the last Newton steps evaluated them.
@@ -347,17 +344,16 @@ class PatchBuilder {
   // `last_turn`: how far the last pass turned the normal [rad].
   bool settle_midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w, double& last_turn) const {
     double previous_move = 0.0, previous_turn = 0.0;
+    NormalLine before;
+    double signed_turn = 0.0;
     for (int pass = 0; pass < kSurfacePasses; ++pass) {
-      const NormalLine before = line;
+      before = line;
       double moved = 0.0;
       if (!midway(line, dz, state, w, moved)) return false;
       // |sin| of the turn between the two normals: the turn itself at the small turns the tolerances test.
-      const double signed_turn = before.c * line.sn - before.sn * line.c;
+      signed_turn = before.c * line.sn - before.sn * line.c;
       const double move = std::abs(moved), turn = std::abs(signed_turn);
       last_turn = turn;
-      // A small last turn moves the intersections to first order (next_move): n -> n (1 - t theta); the
-      // sample then needs no re-intersection along the final normal (conformal_sample).
-      if (turn >= kReintersectTurn_rad && turn < kFirstOrderTurn_rad) turn_intersections(before, state, w, signed_turn);
       if (move < kSurfaceMove_m && turn < kSurfaceTurn_rad) break;
       if (kNextMoveMargin * next_move(before, state, w, turn) < kSurfaceMove_m) break;
       // The passes contract geometrically: the next would move the point by about move^2 / previous_move.
@@ -366,6 +362,9 @@ class PatchBuilder {
       previous_move = move;
       previous_turn = turn;
     }
+    // A small last turn moves the intersections to first order (next_move): n -> n (1 - t theta); the sample then
+    // needs no re-intersection along the final normal (conformal_sample).
+    if (last_turn < kFirstOrderTurn_rad) turn_intersections(before, state, w, signed_turn);
     return true;
   }
 
