@@ -158,6 +158,14 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
             ->default_str(std::string(c.reference_at_interpenetration_centre ? gen::kReferencePointCentre
                                                                              : gen::kReferencePointDeepest)));
     add(app.add_option_function<std::string>(
+               "--reference-angle",
+               [&c](const std::string& name) { c.reference_angle = gen::parse_reference_angle(name); },
+               "inclination of a patch's contact plane: tangent (the rail's at the reference point) or "
+               "interpenetration-mean (CONTACT's: the mean over the interpenetration region); default: the reference "
+               "point's own (deepest: tangent; interpenetration-centre: interpenetration-mean; README \"Flange and "
+               "flank\")")
+            ->check(CLI::IsMember({std::string(gen::kReferenceAngleTangent), std::string(gen::kReferenceAngleMean)})));
+    add(app.add_option_function<std::string>(
                "--surface", [&c](const std::string& name) { c.surface = *gen::parse_contact_surface(name); },
                "contact surface of a patch: planar (one plane) or conformal (curved surface midway between the "
                "profiles, one normal per strip; README \"Flange and flank\")")
@@ -183,6 +191,11 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
 
 void finish_setup_options(gen::TableConfig& config) {
   config.inclination = gen::parse_inclination(config.inclination_text, "--inclination", 0, "");
+  if (config.reference_at_interpenetration_centre && config.reference_angle == gen::ReferenceAngle::Tangent)
+    throw gen::InputError(
+        "--reference-angle", 0,
+        "tangent needs --reference-point deepest: CONTACT's reference point (interpenetration-centre) "
+        "takes CONTACT's reference angle");
 }
 
 int sweep_threads(int requested) {

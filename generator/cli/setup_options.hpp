@@ -24,7 +24,7 @@ enum SetupGroup : unsigned {
   kProfiles = 1u,  //!< --wheel, --rail, --inclination, --smoothing
   kTrack = 2u,     //!< --gauge, --flange-back-distance, --nominal-radius
   kMode = 4u,      //!< --mode wheelset|wheel
-  kSolver = 8u,    //!< --method, --strip-width, --reference-point, --surface
+  kSolver = 8u,    //!< --method, --strip-width, --reference-point, --reference-angle, --surface
   kMaterial = 16u  //!< --youngs-modulus, --poisson-ratio (hidden aliases --E, --nu)
 };
 

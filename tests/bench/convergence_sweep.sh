@@ -3,11 +3,12 @@
 # (20 ... 150 kN; for the approach kind ten approaches 20 ... 200 um), both modes, built-in and Manchester profiles,
 # each loading kind, through `ctab generate`. Prints one line per table and the total count of failed wheel cases.
 #
-#   tests/bench/convergence_sweep.sh [CTAB] [PROFILES_DIR] [STEP_M] [SURFACE] [REFERENCE_POINT]
+#   tests/bench/convergence_sweep.sh [CTAB] [PROFILES_DIR] [STEP_M] [SURFACE] [REFERENCE_POINT] [REFERENCE_ANGLE]
 #
 # CTAB defaults to build/bin/ctab, PROFILES_DIR to ../shared/profiles (the Manchester files), STEP_M to 1e-5,
 # SURFACE (planar or conformal, [solver] surface) to planar, REFERENCE_POINT (deepest or interpenetration-centre,
-# [solver] reference_point) to deepest.
+# [solver] reference_point) to deepest, REFERENCE_ANGLE (tangent or interpenetration-mean, [solver] reference_angle)
+# to the reference point's own.
 # Exit status: 0 when no case failed, 1 otherwise.
 set -euo pipefail
 ctab=${1:-build/bin/ctab}
@@ -15,6 +16,7 @@ profiles=$(cd "${2:-../shared/profiles}" && pwd)
 step=${3:-1e-5}
 surface=${4:-planar}
 reference_point=${5:-deepest}
+reference_angle_line=${6:+reference_angle = \"$6\"}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -44,6 +46,7 @@ $profile_lines
 mode = "$mode"
 surface = "$surface"
 reference_point = "$reference_point"
+$reference_angle_line
 [axes]
 lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = $step }
 $kind = $values

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_run.hpp"
@@ -150,5 +151,71 @@ TEST(CliMethod, ReferencePointMovesTheFlankContactPlane) {
               std::string::npos)
         << e.what();
     EXPECT_EQ(e.line(), 2u);
+  }
+}
+
+// `--reference-angle` and `[solver] reference_angle`: at the flank (dy 7.5 mm, as above) the deepest point's plane
+// inclined at CONTACT's reference angle keeps the deepest rail point and takes the centre rule's angle (within
+// 0.02 deg; the tangent there is 0.6 deg steeper); the config key reaches `ctab solve --config` and the table's
+// provenance; tangent with CONTACT's reference point, or a bad name, is an input error (exit 2) naming the line.
+TEST(CliMethod, ReferenceAngleInclinesTheDeepestPointsPlane) {
+  const auto solve = [](const std::vector<std::string>& extra) {
+    std::vector<std::string> arguments = {"solve", "--mode", "wheel",           "--side", "right",
+                                          "--dy",  "7.5e-3", "--vertical-load", "78.5e3", "--json"};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    const ctab::test::CtabRun run = ctab::test::run_ctab(arguments);
+    EXPECT_EQ(run.exit_code, 0) << run.output();
+    return nlohmann::json::parse(run.out)["right"]["patches"][0];
+  };
+  const auto tangent = solve({}), centre = solve({"--reference-point", "interpenetration-centre"});
+  const auto mean = solve({"--reference-angle", "interpenetration-mean"});
+  constexpr double kDeg = 3.14159265358979323846 / 180.0;
+  EXPECT_EQ(mean["y_rail_m"].get<double>(), tangent["y_rail_m"].get<double>());
+  EXPECT_NEAR(mean["plane_angle_rad"].get<double>(), centre["plane_angle_rad"].get<double>(), 0.02 * kDeg);
+  EXPECT_GT(std::abs(mean["plane_angle_rad"].get<double>() - tangent["plane_angle_rad"].get<double>()), 0.3 * kDeg);
+  EXPECT_EQ(solve({"--reference-point", "interpenetration-centre", "--reference-angle", "interpenetration-mean"}),
+            centre);
+
+  const std::string axes = "[axes]\nlateral_displacement_m = { start = 7.5e-3, stop = 7.5e-3, step = 1e-3 }\n"
+                           "vertical_load_N = 78.5e3\n";
+  const std::string path =
+      ctab::test::write_temp("reference_angle.toml",
+                             "[solver]\nmode = \"wheel\"\nreference_angle = \"interpenetration-mean\"\n" + axes);
+  const ctab::test::CtabRun from_config =
+      ctab::test::run_ctab({"solve", "--config", path, "--dy", "7.5e-3", "--side", "right", "--json"});
+  ASSERT_EQ(from_config.exit_code, 0) << from_config.output();
+  EXPECT_EQ(nlohmann::json::parse(from_config.out)["right"]["patches"][0], mean);
+  const ctab::gen::TableConfig config = ctab::gen::read_table_config(path);
+  const ctab::tables::Table table = ctab::gen::generate_table(config, ctab::gen::GeneratorInfo{});
+  EXPECT_EQ(table.text_attributes.at("reference_point"), "deepest");
+  EXPECT_EQ(table.text_attributes.at("reference_angle"), "interpenetration-mean");
+  const ctab::tables::Table centre_table =
+      ctab::gen::generate_table(ctab::gen::parse_table_config("[solver]\nmode = \"wheel\"\nreference_point = "
+                                                              "\"interpenetration-centre\"\n" +
+                                                                  axes,
+                                                              "centre.toml"),
+                                ctab::gen::GeneratorInfo{});
+  EXPECT_EQ(centre_table.text_attributes.at("reference_point"), "interpenetration-centre");
+  EXPECT_EQ(centre_table.text_attributes.at("reference_angle"), "interpenetration-mean");
+
+  const ctab::test::CtabRun conflict =
+      ctab::test::run_ctab({"solve", "--mode", "wheel", "--dy", "0", "--vertical-load", "78.5e3", "--reference-point",
+                            "interpenetration-centre", "--reference-angle", "tangent"});
+  EXPECT_EQ(conflict.exit_code, 2) << conflict.output();
+  EXPECT_NE(conflict.err.find("--reference-angle"), std::string::npos) << conflict.err;
+  for (const auto& [text, expected] :
+       {std::pair<std::string, std::string>{"reference_point = \"interpenetration-centre\"\nreference_angle = "
+                                            "\"tangent\"\n",
+                                            "\"tangent\" needs reference_point = \"deepest\""},
+        std::pair<std::string, std::string>{"reference_angle = \"steep\"\n",
+                                            "expected \"tangent\" or \"interpenetration-mean\", got \"steep\""}}) {
+    const std::string bad_path = ctab::test::write_temp("bad_reference_angle.toml", "[solver]\n" + text + axes);
+    try {
+      (void)ctab::gen::read_table_config(bad_path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const ctab::gen::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+      EXPECT_EQ(e.line(), text.find("reference_angle") == 0 ? 2u : 3u) << text;
+    }
   }
 }

@@ -34,17 +34,18 @@ strip_samples = 16
 
 const double kTolerance = Mim1dOptions{}.tolerance;  // the solver's relative tolerance [-]
 
-// The fine config with [solver] warm_start set (true) or left at its default (false).
-TableConfig fine_config(bool warm_start) {
+// The fine config with [solver] warm_start set (true) or left at its default (false), and further [solver] lines.
+TableConfig fine_config(bool warm_start, const std::string& solver_lines = "") {
   std::string text = kFineConfig;
   if (warm_start) text.insert(text.find("[solver]\n") + 9, "warm_start = true\n");
+  text.insert(text.find("[solver]\n") + 9, solver_lines);
   return parse_table_config(text, "fine.toml");
 }
 
-Table fine_table(int threads, bool warm_start) {
+Table fine_table(int threads, bool warm_start, const std::string& solver_lines = "") {
   GeneratorInfo info;
   info.threads = threads;
-  return generate_table(fine_config(warm_start), info);
+  return generate_table(fine_config(warm_start, solver_lines), info);
 }
 
 const Table& warm_table(int threads) {
@@ -112,9 +113,7 @@ TEST(WarmStart, TableIsBitIdenticalAtOneAndTwoThreads) {
     EXPECT_TRUE(one.patch.*field == two.patch.*field);  // bit for bit (== on doubles, no tolerance)
 }
 
-TEST(WarmStart, TableAgreesWithColdStartWithinTheSolverTolerance) {
-  const Table& warm = warm_table(2);
-  const Table cold = fine_table(2, false);
+void expect_warm_agrees_with_cold(const Table& warm, const Table& cold) {
   ASSERT_TRUE(warm.status == cold.status);
   ASSERT_TRUE(warm.patch.present == cold.patch.present);  // the same patches in the same slots
   const std::size_t n_second = warm.second_axis.size(), slots = warm.n_slots;
@@ -142,6 +141,17 @@ TEST(WarmStart, TableAgreesWithColdStartWithinTheSolverTolerance) {
     EXPECT_LE(worst, 1000.0 * kTolerance);
     std::printf("  field worst difference %.2e of its largest value\n", worst);
   }
+}
+
+TEST(WarmStart, TableAgreesWithColdStartWithinTheSolverTolerance) {
+  expect_warm_agrees_with_cold(warm_table(2), fine_table(2, false));
+}
+
+// With CONTACT's reference angle at the deepest point the plane's inclination follows each gap pass's sampling
+// approach, which starts where a cold start does: the same agreement.
+TEST(WarmStart, TableAgreesWithColdStartWithContactsReferenceAngle) {
+  const std::string mean = "reference_angle = \"interpenetration-mean\"\n";
+  expect_warm_agrees_with_cold(fine_table(2, true, mean), fine_table(2, false, mean));
 }
 
 // Along one chain of 0.01 mm steps the warm solves agree with cold ones within the tolerance and need fewer

@@ -39,6 +39,8 @@ mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "whe
 method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (README "Method ladder")
 strip_width_m = 0.2e-3
 reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
+# reference_angle = "interpenetration-mean"  # plane inclination: the reference point's own when absent (deepest:
+                                            # "tangent"), or CONTACT's mean (README "Flange and flank")
 surface = "planar"       # contact surface: "planar" (one plane per patch) or "conformal" (curved, CONTACT D=4)
 warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; README "Speed")
 
@@ -258,6 +260,17 @@ void read_solver(const Reader& r, TableConfig& c) {
            "expected \"deepest\" or \"interpenetration-centre\", got \"" + r.text("solver", "reference_point", "") +
                "\"");
   c.reference_at_interpenetration_centre = *centre;
+  if (const toml::node* node = r.find("solver", "reference_angle")) {
+    const std::string name = r.text("solver", "reference_angle", "");
+    c.reference_angle = parse_reference_angle(name);
+    if (!c.reference_angle)
+      r.fail(*node, "solver.reference_angle",
+             "expected \"tangent\" or \"interpenetration-mean\", got \"" + name + "\"");
+    if (*centre && c.reference_angle == ReferenceAngle::Tangent)
+      r.fail(*node, "solver.reference_angle",
+             "\"tangent\" needs reference_point = \"deepest\": CONTACT's reference point (\"interpenetration-centre\") "
+             "takes CONTACT's reference angle");
+  }
   const std::optional<ContactSurface> surface = parse_contact_surface(r.text("solver", "surface", "planar"));
   if (!surface)
     r.fail(*r.find("solver", "surface"), "solver.surface",
@@ -351,7 +364,9 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
       {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
        {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
-       {"solver", {"mode", "method", "tolerance", "strip_width_m", "reference_point", "surface", "warm_start"}},
+       {"solver",
+        {"mode", "method", "tolerance", "strip_width_m", "reference_point", "reference_angle", "surface",
+         "warm_start"}},
        {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;

@@ -114,6 +114,7 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.auto_tolerance = config.least_model ? config.tolerance : 0.0;
   setup.options.mim1d.strip_width_m = config.strip_width_m;  // range checked by the config
   setup.options.reference_at_interpenetration_centre = config.reference_at_interpenetration_centre;
+  setup.options.reference_angle = config.reference_angle;
   setup.options.surface = config.surface;
   setup.mode = config.mode;
   setup.load_kind = config.load_kind;
@@ -645,6 +646,8 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
   text["method"] = config.least_model ? "auto" : method_name(config.method);  // per case: /wheels/method
   text["surface"] = std::string(surface_name(config.surface));
+  text["reference_point"] = std::string(reference_point_name(config.reference_at_interpenetration_centre));
+  text["reference_angle"] = std::string(reference_angle_name(setup.options));
   text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;

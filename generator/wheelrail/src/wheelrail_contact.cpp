@@ -604,6 +604,8 @@ class WheelCase {
     if (!std::isfinite(roll_)) return "roll angle is not finite";
     if (!std::isfinite(value_)) return "load is not finite";
     if (value_ < 0.0) return load_ == LoadKind::Approach ? "negative approach" : "negative load";
+    if (options_.reference_at_interpenetration_centre && options_.reference_angle == ReferenceAngle::Tangent)
+      return "CONTACT's reference point (the interpenetration centre) takes CONTACT's reference angle, not the tangent";
     if (const auto& reference = options_.prescribed_reference) {
       if (options_.surface != ContactSurface::Planar) return "a prescribed reference point needs the planar surface";
       if (!std::isfinite(reference->contact_angle_rad) || !side_.rail().contains(reference->rail_y_m))
@@ -956,10 +958,14 @@ class WheelCase {
   // With CONTACT's reference rule every gap pass samples in the plane at the interpenetration centre of its own
   // sampling approach, so the passes settle the approach and the reference point together (one fixed point); before,
   // the whole load solve was repeated at each new centre (2.2x the CPU of the deepest point on the default table).
+  // With CONTACT's reference angle at the deepest point only the plane's inclination follows: the passes then settle
+  // the approach alone (a plane's gap is the same through any of its points; the point places the strip grid).
   void follow_interpenetration_centre(PatchProblem& main) const {
-    if (!options_.reference_at_interpenetration_centre || options_.prescribed_reference || recentring_) return;
+    if (!options_.interpenetration_mean_angle() || options_.prescribed_reference || recentring_) return;
     GapMinimum centre = ws_.minima[0];
-    if (interpenetration_centre(centre, main.gap_dz)) main.reference = centre;
+    if (!interpenetration_centre(centre, main.gap_dz)) return;
+    if (options_.reference_at_interpenetration_centre) main.reference = centre;
+    else main.reference.contact_angle_rad = centre.contact_angle_rad;
   }
 
   // CONTACT's contact reference point (m_wr_locatecp step 5): the centre of the interpenetration region at the

@@ -5,6 +5,7 @@
 //! (kDefaultTableConfig, also examples/configs/default.toml) is S1002 on UIC60 1:40 with the Manchester set-up,
 //! wheelset mode, dy from -12 to +12 mm in 0.1 mm steps, vertical wheel load 78.5 kN, MIM-1D at 0.2 mm strips.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +57,9 @@ struct TableConfig {
   //! [solver] reference_point: "deepest" (false, the default) or "interpenetration-centre" (true, CONTACT's rule):
   //! where a patch's contact plane is placed (WheelRailOptions::reference_at_interpenetration_centre).
   bool reference_at_interpenetration_centre = false;
+  //! [solver] reference_angle: "tangent" or "interpenetration-mean" (CONTACT's); absent: the reference point's own
+  //! (WheelRailOptions::reference_angle).
+  std::optional<ReferenceAngle> reference_angle;
   //! [solver] surface: "planar" (the default) or "conformal" (WheelRailOptions::surface).
   ContactSurface surface = ContactSurface::Planar;
   //! [solver] warm_start: each MIM-1D solve starts from its neighbour in dy, in fixed chains of rows
