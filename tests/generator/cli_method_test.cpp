@@ -23,6 +23,17 @@ std::string small_config(const std::string& method) {
          "\"\n[axes]\nlateral_displacement_m = { start = -2e-3, stop = 2e-3, step = 2e-3 }\nvertical_load_N = 78.5e3\n";
 }
 
+// `ctab solve` of the right wheel on the flange flank (dy 7.5 mm, built-in S1002 on UIC60 1:40, single wheel,
+// 78.5 kN vertical load) with `extra` options: the right wheel's JSON.
+nlohmann::json solve_flank(const std::vector<std::string>& extra) {
+  std::vector<std::string> arguments = {"solve", "--mode", "wheel",           "--side", "right",
+                                        "--dy",  "7.5e-3", "--vertical-load", "78.5e3", "--json"};
+  arguments.insert(arguments.end(), extra.begin(), extra.end());
+  const ctab::test::CtabRun run = ctab::test::run_ctab(arguments);
+  EXPECT_EQ(run.exit_code, 0) << run.output();
+  return nlohmann::json::parse(run.out)["right"];
+}
+
 }  // namespace
 
 TEST(CliMethod, SolveGapWithEveryRung) {
@@ -103,15 +114,7 @@ TEST(CliMethod, TableConfigMethodReachesTheTableAndSolveConfig) {
 // contact plane at the centre of the interpenetration region, which moves the rail point by about 0.07 mm. Both
 // balance the vertical load; the config key reaches `ctab solve --config`; a bad name is an input error (exit 2).
 TEST(CliMethod, ReferencePointMovesTheFlankContactPlane) {
-  const auto solve = [](const std::vector<std::string>& extra) {
-    std::vector<std::string> arguments = {"solve", "--mode", "wheel",           "--side", "right",
-                                          "--dy",  "7.5e-3", "--vertical-load", "78.5e3", "--json"};
-    arguments.insert(arguments.end(), extra.begin(), extra.end());
-    const ctab::test::CtabRun run = ctab::test::run_ctab(arguments);
-    EXPECT_EQ(run.exit_code, 0) << run.output();
-    return nlohmann::json::parse(run.out)["right"];
-  };
-  const auto deepest = solve({}), centre = solve({"--reference-point", "interpenetration-centre"});
+  const auto deepest = solve_flank({}), centre = solve_flank({"--reference-point", "interpenetration-centre"});
   ASSERT_EQ(deepest["patches"].size(), 1u);
   ASSERT_EQ(centre["patches"].size(), 1u);
   for (const auto* wheel : {&deepest, &centre}) {
@@ -159,14 +162,7 @@ TEST(CliMethod, ReferencePointMovesTheFlankContactPlane) {
 // 0.02 deg; the tangent there is 0.6 deg steeper); the config key reaches `ctab solve --config` and the table's
 // provenance; tangent with CONTACT's reference point, or a bad name, is an input error (exit 2) naming the line.
 TEST(CliMethod, ReferenceAngleInclinesTheDeepestPointsPlane) {
-  const auto solve = [](const std::vector<std::string>& extra) {
-    std::vector<std::string> arguments = {"solve", "--mode", "wheel",           "--side", "right",
-                                          "--dy",  "7.5e-3", "--vertical-load", "78.5e3", "--json"};
-    arguments.insert(arguments.end(), extra.begin(), extra.end());
-    const ctab::test::CtabRun run = ctab::test::run_ctab(arguments);
-    EXPECT_EQ(run.exit_code, 0) << run.output();
-    return nlohmann::json::parse(run.out)["right"]["patches"][0];
-  };
+  const auto solve = [](const std::vector<std::string>& extra) { return solve_flank(extra)["patches"][0]; };
   const auto tangent = solve({}), centre = solve({"--reference-point", "interpenetration-centre"});
   const auto mean = solve({"--reference-angle", "interpenetration-mean"});
   constexpr double kDeg = 3.14159265358979323846 / 180.0;
