@@ -99,15 +99,9 @@ TEST_P(WheelRailContact, MatchesContact) {
 // interpenetration region, the plane at the weighted mean of the rail's inclination over it) the plane is CONTACT's
 // at every dy, also at 5 mm where tread and flange root form one region: ctab solves both runs in that one plane, as
 // CONTACT does, and the force points along its normal.
-TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRule) {
-  CTAB_REQUIRE_SHARED();
-  const Case c = GetParam();
-  const SummaryRow ref = summary_row(c.dy_mm);
-  ASSERT_TRUE(ref.found);
-  const double ref_angle_deg = ref.angle_rad * 180 / M_PI, ref_area = ref.area_mm2, ref_pmax = ref.pmax_MPa;
-  WheelRailOptions options;
-  options.reference_at_interpenetration_centre = true;
-  const WheelContact contact = solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
+void expect_contacts_plane(const Case& c, const SideGeometry& side, const WheelRailOptions& options,
+                           double ref_angle_deg, double ref_area_mm2, double ref_pmax_MPa) {
+  const WheelContact contact = solve_wheel_contact(side, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
                                                    LoadKind::NormalForce, 78.5e3, options);
   ASSERT_EQ(contact.status, SolveStatus::Converged);
   ASSERT_FALSE(contact.patches.empty());
@@ -122,11 +116,33 @@ TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRule) {
   const double direction_deg = -std::atan2(lateral, vertical) * 180 / M_PI;
   std::cout << "dy " << c.dy_mm << " mm (" << contact.patches.size() << " patch): plane " << plane_deg - ref_angle_deg
             << " deg, force direction " << direction_deg - ref_angle_deg << " deg, area "
-            << 100 * (area * 1e6 / ref_area - 1) << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax - 1) << " %\n";
+            << 100 * (area * 1e6 / ref_area_mm2 - 1) << " %, pmax " << 100 * (pmax * 1e-6 / ref_pmax_MPa - 1) << " %\n";
   EXPECT_NEAR(plane_deg, ref_angle_deg, 0.2);
   EXPECT_NEAR(direction_deg, ref_angle_deg, 0.2);
-  EXPECT_NEAR(area * 1e6 / ref_area - 1.0, 0.0, 0.02);
-  EXPECT_NEAR(pmax * 1e-6 / ref_pmax - 1.0, 0.0, 0.05);
+  EXPECT_NEAR(area * 1e6 / ref_area_mm2 - 1.0, 0.0, 0.02);
+  EXPECT_NEAR(pmax * 1e-6 / ref_pmax_MPa - 1.0, 0.0, 0.05);
+}
+
+TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRule) {
+  CTAB_REQUIRE_SHARED();
+  const Case c = GetParam();
+  const SummaryRow ref = summary_row(c.dy_mm);
+  ASSERT_TRUE(ref.found);
+  WheelRailOptions options;
+  options.reference_at_interpenetration_centre = true;
+  expect_contacts_plane(c, *side_, options, ref.angle_rad * 180 / M_PI, ref.area_mm2, ref.pmax_MPa);
+}
+
+// The deepest point's plane at CONTACT's reference angle (--reference-angle interpenetration-mean) is CONTACT's plane
+// too: a plane's gap is the same through any of its points.
+TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceAngleAtTheDeepestPoint) {
+  CTAB_REQUIRE_SHARED();
+  const Case c = GetParam();
+  const SummaryRow ref = summary_row(c.dy_mm);
+  ASSERT_TRUE(ref.found);
+  WheelRailOptions options;
+  options.reference_angle = ReferenceAngle::InterpenetrationMean;
+  expect_contacts_plane(c, *side_, options, ref.angle_rad * 180 / M_PI, ref.area_mm2, ref.pmax_MPa);
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactCases, WheelRailContact,
