@@ -123,26 +123,20 @@ void expect_contacts_plane(const Case& c, const SideGeometry& side, const WheelR
   EXPECT_NEAR(pmax * 1e-6 / ref_pmax_MPa - 1.0, 0.0, 0.05);
 }
 
-TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRule) {
-  CTAB_REQUIRE_SHARED();
-  const Case c = GetParam();
-  const SummaryRow ref = summary_row(c.dy_mm);
-  ASSERT_TRUE(ref.found);
-  WheelRailOptions options;
-  options.reference_at_interpenetration_centre = true;
-  expect_contacts_plane(c, *side_, options, ref.angle_rad * 180 / M_PI, ref.area_mm2, ref.pmax_MPa);
-}
-
 // The deepest point's plane at CONTACT's reference angle (--reference-angle interpenetration-mean) is CONTACT's plane
 // too: a plane's gap is the same through any of its points.
-TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceAngleAtTheDeepestPoint) {
+TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRuleOrAngle) {
   CTAB_REQUIRE_SHARED();
   const Case c = GetParam();
   const SummaryRow ref = summary_row(c.dy_mm);
   ASSERT_TRUE(ref.found);
-  WheelRailOptions options;
-  options.reference_angle = ReferenceAngle::InterpenetrationMean;
-  expect_contacts_plane(c, *side_, options, ref.angle_rad * 180 / M_PI, ref.area_mm2, ref.pmax_MPa);
+  WheelRailOptions centre, deepest_at_contacts_angle;
+  centre.reference_at_interpenetration_centre = true;
+  deepest_at_contacts_angle.reference_angle = ReferenceAngle::InterpenetrationMean;
+  for (const WheelRailOptions& options : {centre, deepest_at_contacts_angle}) {
+    SCOPED_TRACE(options.reference_at_interpenetration_centre ? "CONTACT's rule" : "deepest point, CONTACT's angle");
+    expect_contacts_plane(c, *side_, options, ref.angle_rad * 180 / M_PI, ref.area_mm2, ref.pmax_MPa);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactCases, WheelRailContact,
