@@ -155,8 +155,7 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
                "contact plane of a patch: deepest (rigid deepest point) or interpenetration-centre (CONTACT's rule; "
                "README \"Flange and flank\")")
             ->check(CLI::IsMember({std::string(gen::kReferencePointDeepest), std::string(gen::kReferencePointCentre)}))
-            ->default_str(std::string(c.reference_at_interpenetration_centre ? gen::kReferencePointCentre
-                                                                             : gen::kReferencePointDeepest)));
+            ->default_str(std::string(gen::reference_point_name(c.reference_at_interpenetration_centre))));
     add(app.add_option_function<std::string>(
                "--reference-angle",
                [&c](const std::string& name) { c.reference_angle = gen::parse_reference_angle(name); },
