@@ -90,7 +90,8 @@ const char* ctab_status_message(int32_t status) {
     case CTAB_ERR_NOT_A_TABLE: return "not a ctab table (neither a ctab blob nor an HDF5 table), or truncated";
     case CTAB_ERR_VERSION: return "unsupported blob format or table schema version";
     case CTAB_ERR_CHECKSUM: return "blob checksum mismatch (corrupted)";
-    case CTAB_ERR_AXES: return "bad axes (too short, not finite, not increasing, or dy not uniform)";
+    case CTAB_ERR_AXES:
+      return "bad axes (too short, not finite, not increasing, or dy refined below 1/64 of its mean step)";
     case CTAB_ERR_SHAPE: return "array sizes do not match the axes, slots or strip samples";
     case CTAB_ERR_CONTENT: return "bad content (non-finite value, unknown case status, presence not 0/1, bad jump)";
     case CTAB_ERR_OUT_OF_MEMORY: return "out of memory";

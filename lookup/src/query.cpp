@@ -1,6 +1,6 @@
-// Table::prelookup and Table::query: index search (arithmetic on the uniform dy axis, fixed-step binary search on
-// the second axis) and interpolation of every slot's record, with the blending rules of README "Jumps".
-// No allocation, no branch on the table's values, loops bounded by the table's sizes only.
+// Table::prelookup and Table::query: index search (an index on the smallest dy step and at most two steps on either
+// side, fixed-step binary search on the second axis) and interpolation of every slot's record, with the blending rules
+// of README "Jumps". No allocation, no branch on the table's values, loops bounded by the table's sizes only.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -21,7 +21,7 @@ namespace ctab::lookup {
 
 namespace {
 
-constexpr double kClampTolerance = 1e-9;  // in cells: points this close outside the range count as inside
+constexpr double kClampTolerance = 1e-9;  // in (end) cells: points this close outside the range count as inside
 
 static_assert(sizeof(ctab_patch) == (kQuantities + 1) * sizeof(double), "ctab_patch: no padding (ctypes, memcmp)");
 
@@ -52,15 +52,32 @@ void Table::prelookup(double dy_m, double second, ctab_location& out) const noex
   }
   const std::size_t n_2 = second_.size();
   const bool finite = std::isfinite(dy_m) && (n_2 == 1 || std::isfinite(second));
-  // dy: arithmetic index on the uniform axis.
-  const double last = static_cast<double>(n_dy_ - 1);
-  const double x = finite ? (dy_m - dy0_) * inv_ddy_ : 0.0;
-  const double x_clamped = std::min(std::max(x, 0.0), last);
-  const std::uint32_t i = std::min(static_cast<std::uint32_t>(x_clamped), n_dy_ - 2);
-  bool clamped = x < -kClampTolerance || x > last + kClampTolerance;
-  out.i_dy = i;
-  out.f_dy = x_clamped - static_cast<double>(i);
-  out.dy_m = dy0_ + ddy_ * x_clamped;
+  // dy: arithmetic on a uniform axis; on a refined one the index entry of the point's smallest-step interval, then
+  // the cell that holds it (the entry's or, where rounding put the point across a node, a neighbour: two steps
+  // either way bound it).
+  const double first = dy_.front(), last = dy_.back();
+  const double d = finite ? dy_m : first;
+  bool clamped = false;
+  if (uniform_dy_) {
+    const double n_cells = static_cast<double>(n_dy_ - 1);
+    const double x = (d - first) * inv_mean_step_;
+    const double x_clamped = std::min(std::max(x, 0.0), n_cells);
+    const std::uint32_t i = std::min(static_cast<std::uint32_t>(x_clamped), n_dy_ - 2);
+    clamped = x < -kClampTolerance || x > n_cells + kClampTolerance;
+    out.i_dy = i;
+    out.f_dy = x_clamped - static_cast<double>(i);
+    out.dy_m = first + cell_width_.front() * x_clamped;
+  } else {
+    const double d_clamped = std::min(std::max(d, first), last);
+    clamped = d < first - kClampTolerance * cell_width_.front() || d > last + kClampTolerance * cell_width_.back();
+    const auto k = std::min(static_cast<std::size_t>((d_clamped - first) * inv_index_step_), dy_index_.size() - 1);
+    std::uint32_t i = dy_index_[k];
+    for (int step = 0; step < 2; ++step) i -= (i > 0 && d_clamped < dy_[i]) ? 1u : 0u;
+    for (int step = 0; step < 2; ++step) i += (i + 2 < n_dy_ && d_clamped >= dy_[i + 1]) ? 1u : 0u;
+    out.i_dy = i;
+    out.f_dy = std::min(std::max((d_clamped - dy_[i]) * inv_cell_width_[i], 0.0), 1.0);
+    out.dy_m = d_clamped;
+  }
   // Second axis: binary search with a fixed number of steps (ceil(log2 n)), independent of the value.
   if (n_2 > 1) {
     const double s = finite ? second : second_.front();
@@ -144,15 +161,16 @@ template <typename T, bool kCubic>
                                                      ctab_result& out) const noexcept {
   const T* records_ = records<T>();
   const T* slopes = slope_records<T>();
-  // Hermite basis on the unit cell (slopes are per metre, hence the factor ddy).
+  // Hermite basis on the unit cell (slopes are per metre, hence the factor of the cell's width).
   DyBasis basis;
+  const double width = cell_width_[where.i_dy];
   const double f = where.f_dy, f2 = f * f, f3 = f2 * f;
   basis.f = f;
   basis.step = f >= 0.5 ? 1.0 : 0.0;
   basis.h00 = 2.0 * f3 - 3.0 * f2 + 1.0;
   basis.h01 = -2.0 * f3 + 3.0 * f2;
-  basis.h10 = (f3 - 2.0 * f2 + f) * ddy_;
-  basis.h11 = (f3 - f2) * ddy_;
+  basis.h10 = (f3 - 2.0 * f2 + f) * width;
+  basis.h11 = (f3 - f2) * width;
   const std::size_t lo0 = case_(where.i_dy, where.i_second, wheel) * stride_;
   const std::size_t hi0 = case_(where.i_dy + 1, where.i_second, wheel) * stride_;
   const T* slope_lo0 = kCubic ? slopes + lo0 : nullptr;

@@ -1,4 +1,5 @@
 // TableData: sizing and validation (axes, shapes, finite values, statuses, presence, jumps).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,9 +9,8 @@ namespace ctab::lookup {
 
 namespace {
 
-constexpr int kCaseStatusMin = -6;          // tables::kCaseStatusMin
-constexpr int kCaseStatusMax = 2;           // tables::kCaseStatusMax
-constexpr double kUniformTolerance = 1e-9;  // relative to the dy span
+constexpr int kCaseStatusMin = -6;  // tables::kCaseStatusMin
+constexpr int kCaseStatusMax = 2;   // tables::kCaseStatusMax
 
 LoadResult fail(ctab_status status, const std::string& what) { return {status, what}; }
 
@@ -48,12 +48,16 @@ LoadResult validate(const TableData& data) {
   const std::size_t n_2 = data.n_second();
   if (n_dy < 2 || n_2 < 1) return fail(CTAB_ERR_AXES, "the dy axis needs at least 2 values and the second axis 1");
   if (!all_finite(data.dy_m) || !all_finite(data.second)) return fail(CTAB_ERR_AXES, "an axis value is not finite");
-  const double step = (data.dy_m.back() - data.dy_m.front()) / static_cast<double>(n_dy - 1);
-  if (!(step > 0.0)) return fail(CTAB_ERR_AXES, "the dy axis is not increasing");
-  const double span = data.dy_m.back() - data.dy_m.front();
-  for (std::size_t i = 0; i < n_dy; ++i)
-    if (std::fabs(data.dy_m[i] - (data.dy_m.front() + step * static_cast<double>(i))) > kUniformTolerance * span)
-      return fail(CTAB_ERR_AXES, "the dy axis is not uniform at index " + std::to_string(i));
+  double smallest_step = data.dy_m[1] - data.dy_m[0];
+  for (std::size_t i = 1; i < n_dy; ++i) {
+    if (!(data.dy_m[i] > data.dy_m[i - 1]))
+      return fail(CTAB_ERR_AXES, "the dy axis is not strictly increasing at index " + std::to_string(i));
+    smallest_step = std::min(smallest_step, data.dy_m[i] - data.dy_m[i - 1]);
+  }
+  const double mean_step = (data.dy_m.back() - data.dy_m.front()) / static_cast<double>(n_dy - 1);
+  if (smallest_step < mean_step / kMaxDyRefinement)
+    return fail(CTAB_ERR_AXES, "the dy axis's smallest step is finer than 1/" +
+                                   std::to_string(static_cast<int>(kMaxDyRefinement)) + " of its mean step");
   for (std::size_t i = 1; i < n_2; ++i)
     if (!(data.second[i] > data.second[i - 1]))
       return fail(CTAB_ERR_AXES, "the second axis is not strictly increasing at index " + std::to_string(i));

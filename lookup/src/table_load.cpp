@@ -1,6 +1,6 @@
 // Table::load: copies a validated TableData into one aligned record per case (lookup/include/ctab/lookup/table.hpp)
-// and precomputes, per dy cell and slot, the blending rule (README "Jumps"), and with PCHIP the Fritsch-Carlson
-// slopes at every node.
+// and precomputes, per dy cell and slot, the blending rule (README "Jumps"), the dy index, and with PCHIP the
+// Fritsch-Carlson slopes at every node.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -11,14 +11,20 @@ namespace ctab::lookup {
 
 namespace {
 
-constexpr std::size_t kAlignBytes = 64;  // a cache line
+constexpr std::size_t kAlignBytes = 64;     // a cache line
+constexpr double kUniformTolerance = 1e-9;  // relative to the dy span
 
 bool succeeded(std::int8_t case_status) noexcept { return case_status >= 0; }  // converged, no contact, under-resolved
 
-//! Fritsch-Carlson slope at a node from the secants of its interpolable neighbouring cells (uniform spacing:
-//! the harmonic mean, 0 at an extremum; one-sided: that cell's secant, which keeps the cubic monotone).
-double node_slope(bool has_left, double left, bool has_right, double right) noexcept {
-  if (has_left && has_right) return left * right <= 0.0 ? 0.0 : 2.0 / (1.0 / left + 1.0 / right);
+//! Fritsch-Carlson slope at a node from the secants of its interpolable neighbouring cells (widths h_left, h_right:
+//! Fritsch and Butland's weighted harmonic mean, which is the plain harmonic mean on a uniform axis; 0 at an
+//! extremum; one-sided: that cell's secant, which keeps the cubic monotone).
+double node_slope(bool has_left, double left, double h_left, bool has_right, double right, double h_right) noexcept {
+  if (has_left && has_right) {
+    if (left * right <= 0.0) return 0.0;
+    const double w_left = 2.0 * h_right + h_left, w_right = h_right + 2.0 * h_left;
+    return (w_left + w_right) / (w_left / left + w_right / right);
+  }
   if (has_left) return left;
   if (has_right) return right;
   return 0.0;
@@ -59,7 +65,16 @@ LoadResult Table::load(const TableData& data, const LoadOptions& options) {
 
   const std::size_t n_dy = data.n_dy(), n_2 = data.n_second(), n_slots = data.n_slots;
   const std::size_t cases = n_dy * n_2 * kWheels;
-  const double ddy = (data.dy_m.back() - data.dy_m.front()) / static_cast<double>(n_dy - 1);
+  // A uniform axis (to 1e-9 of its span) keeps one width for every cell and arithmetic search (the answers of
+  // tables without refinement stay bit for bit what they were).
+  const double span = data.dy_m.back() - data.dy_m.front(), mean_step = span / static_cast<double>(n_dy - 1);
+  bool uniform = true;
+  for (std::size_t i = 0; i < n_dy; ++i)
+    uniform = uniform && std::fabs(data.dy_m[i] - (data.dy_m.front() + mean_step * static_cast<double>(i))) <=
+                             kUniformTolerance * span;
+  std::vector<double> width(n_dy - 1, mean_step);
+  if (!uniform)
+    for (std::size_t i = 0; i + 1 < n_dy; ++i) width[i] = data.dy_m[i + 1] - data.dy_m[i];
   // Record layout, padded to whole cache lines of the storage type.
   const std::size_t per_line = kAlignBytes / (options.single_precision ? sizeof(float) : sizeof(double));
   off_present_ = n_slots * kQuantities;
@@ -102,9 +117,11 @@ LoadResult Table::load(const TableData& data, const LoadOptions& options) {
     };
     const auto slope = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
       const double v = records[c * stride_ + k];
-      const double left = has_left ? (v - records[(c - row) * stride_ + k]) / ddy : 0.0;
-      const double right = has_right ? (records[(c + row) * stride_ + k] - v) / ddy : 0.0;
-      return node_slope(has_left, left, has_right, right);
+      const std::size_t i = c / row;
+      const double h_left = has_left ? width[i - 1] : 0.0, h_right = has_right ? width[i] : 0.0;
+      const double left = has_left ? (v - records[(c - row) * stride_ + k]) / h_left : 0.0;
+      const double right = has_right ? (records[(c + row) * stride_ + k] - v) / h_right : 0.0;
+      return node_slope(has_left, left, h_left, has_right, right, h_right);
     };
     for (std::size_t i = 0; i < n_dy; ++i)
       for (std::size_t k = 0; k < row; ++k) {
@@ -135,9 +152,7 @@ LoadResult Table::load(const TableData& data, const LoadOptions& options) {
   interpolation_ = options.interpolation;
   n_slots_ = static_cast<std::uint32_t>(n_slots);
   strip_samples_ = static_cast<std::uint32_t>(data.strip_samples);
-  dy0_ = data.dy_m.front();
-  ddy_ = ddy;
-  inv_ddy_ = 1.0 / ddy;
+  build_dy_index(data.dy_m, width, uniform);
   n_dy_ = static_cast<std::uint32_t>(n_dy);
   return result;
 }
@@ -159,6 +174,27 @@ const float* Table::slope_records<float>() const noexcept {
   return slopes_f_.data();
 }
 
+void Table::build_dy_index(const std::vector<double>& dy_m, const std::vector<double>& width, bool uniform) {
+  uniform_dy_ = uniform;
+  inv_mean_step_ = static_cast<double>(dy_m.size() - 1) / (dy_m.back() - dy_m.front());
+  dy_ = dy_m;
+  cell_width_ = width;
+  inv_cell_width_.resize(width.size());
+  std::transform(width.begin(), width.end(), inv_cell_width_.begin(), [](double h) { return 1.0 / h; });
+  // One entry per smallest step (validate bounds the count by kMaxDyRefinement per node): the cell holding its start.
+  const double smallest = *std::min_element(width.begin(), width.end());
+  const std::size_t n_dy = dy_m.size();
+  const auto entries = static_cast<std::size_t>((dy_m.back() - dy_m.front()) / smallest) + 1;
+  dy_index_.resize(entries);
+  std::uint32_t i = 0;
+  for (std::size_t k = 0; k < entries; ++k) {
+    const double at = dy_m.front() + smallest * static_cast<double>(k);
+    while (i + 2 < n_dy && dy_m[i + 1] <= at) ++i;
+    dy_index_[k] = i;
+  }
+  inv_index_step_ = 1.0 / smallest;
+}
+
 double Table::field(std::size_t c, std::size_t offset) const noexcept {
   return single_precision() ? static_cast<double>(records<float>()[c * stride_ + offset])
                             : records<double>()[c * stride_ + offset];
@@ -167,8 +203,9 @@ double Table::field(std::size_t c, std::size_t offset) const noexcept {
 std::size_t Table::memory_bytes() const noexcept {
   return sizeof(*this) +
          (records_d_.storage.size() + slopes_d_.storage.size() + second_.size() + strip_a_d_.size() +
-          strip_p0_d_.size()) *
+          strip_p0_d_.size() + dy_.size() + cell_width_.size() + inv_cell_width_.size()) *
              sizeof(double) +
+         dy_index_.size() * sizeof(std::uint32_t) +
          (records_f_.storage.size() + slopes_f_.storage.size() + strip_a_f_.size() + strip_p0_f_.size()) *
              sizeof(float);
 }

@@ -10,7 +10,9 @@ std::vector<Jump> detect_jumps(const Table& table) {
   std::vector<Jump> jumps;
   const auto& dy = table.lateral_displacement_m;
   if (dy.size() < 2) return jumps;
-  const double threshold_m = std::max(1e-3, 10.0 * (dy[1] - dy[0]));  // max(1 mm, 10 dy steps)
+  double largest_step = 0.0;  // a refined axis keeps the threshold of its coarse step
+  for (std::size_t i = 1; i < dy.size(); ++i) largest_step = std::max(largest_step, dy[i] - dy[i - 1]);
+  const double threshold_m = std::max(1e-3, 10.0 * largest_step);  // max(1 mm, 10 dy steps)
   const auto& present = table.patch.present;
   const auto& y_rail = table.patch.y_rail_m;
   for (std::size_t i_second = 0; i_second < table.n_second(); ++i_second)

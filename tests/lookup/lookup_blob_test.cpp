@@ -36,20 +36,25 @@ std::vector<ctab_result> answers(const Table& table) {
 
 const TableData kData = test::make_synthetic({.n_second = 3, .failed_case = true});
 
+// A locally refined dy axis: 0.25 mm steps between 5 and 7.5 mm, where the flange appears.
+const TableData kRefined = test::make_synthetic(
+    {.n_second = 3, .failed_case = true, .refine_from_m = 5e-3, .refine_to_m = 7.5e-3, .refine_step_m = 0.25e-3});
+
 TEST(LookupBlob, RoundTripGivesBitIdenticalAnswers) {
-  for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
-    Table direct, from_blob, from_header;
-    ASSERT_TRUE(direct.load(kData, {mode, false}).ok());
-    const std::vector<unsigned char> blob = write_blob(kData, false);
-    EXPECT_EQ(blob.size() % 8, 0u);
-    ASSERT_TRUE(open_memory(blob.data(), blob.size(), {mode, false}, from_blob).ok());
-    const std::vector<unsigned char> parsed = parse_c_header(blob_c_header(blob, "ctab_table_blob"));
-    ASSERT_EQ(parsed, blob);
-    ASSERT_TRUE(open_memory(parsed.data(), parsed.size(), {mode, false}, from_header).ok());
-    const auto expected = answers(direct);
-    EXPECT_TRUE(identical(answers(from_blob), expected));
-    EXPECT_TRUE(identical(answers(from_header), expected));
-  }
+  for (const TableData* data : {&kData, &kRefined})
+    for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
+      Table direct, from_blob, from_header;
+      ASSERT_TRUE(direct.load(*data, {mode, false}).ok());
+      const std::vector<unsigned char> blob = write_blob(*data, false);
+      EXPECT_EQ(blob.size() % 8, 0u);
+      ASSERT_TRUE(open_memory(blob.data(), blob.size(), {mode, false}, from_blob).ok());
+      const std::vector<unsigned char> parsed = parse_c_header(blob_c_header(blob, "ctab_table_blob"));
+      ASSERT_EQ(parsed, blob);
+      ASSERT_TRUE(open_memory(parsed.data(), parsed.size(), {mode, false}, from_header).ok());
+      const auto expected = answers(direct);
+      EXPECT_TRUE(identical(answers(from_blob), expected));
+      EXPECT_TRUE(identical(answers(from_header), expected));
+    }
 }
 
 TEST(LookupBlob, ReadBackEqualsTheDescription) {

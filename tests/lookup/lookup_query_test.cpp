@@ -1,7 +1,9 @@
 // Interpolation and the jump rules of lookup/README.md on synthetic tables (linear data: interpolation is exact).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "ctab/lookup/table.hpp"
@@ -154,6 +156,99 @@ TEST(LookupQuery, StripProfileFollowsTheSlotRules) {
   EXPECT_EQ(count, 0u) << "no flange at 2.5 mm";
   EXPECT_EQ(table.strip_profile(where, 0, 0, s, a, p0, 4, &count), CTAB_INVALID_INPUT) << "capacity too small";
   EXPECT_EQ(table.strip_profile(where, 0, 3, s, a, p0, 8, &count), CTAB_INVALID_INPUT) << "no slot 3";
+}
+
+}  // namespace
+}  // namespace ctab::lookup
+
+namespace ctab::lookup {
+namespace {
+
+// A locally refined dy axis (tables/README "Axes"): 0.1 mm steps between 5 and 7.5 mm in a 1 mm table.
+TableData refined_synthetic() {
+  return make_synthetic({.refine_from_m = 5e-3, .refine_to_m = 7.5e-3, .refine_step_m = 0.1e-3});
+}
+
+// The prelookup's index finds the cell a binary search finds, at random points, at every node and one ulp either
+// side of it, with the fraction that gives the point back.
+TEST(LookupQuery, RefinedAxisFindsTheCellOfABinarySearch) {
+  const TableData data = refined_synthetic();
+  ASSERT_EQ(data.n_dy(), 25u + 26u - 3u);  // 26 refined nodes, 3 of them on the uniform grid
+  const Table table = load(data);
+  std::vector<double> points;
+  for (int k = 0; k < 200000; ++k)
+    points.push_back(-12e-3 + 24e-3 * ((k * 0.6180339887498949) - std::floor(k * 0.6180339887498949)));
+  for (const double node : data.dy_m)
+    for (const double at : {std::nextafter(node, -1.0), node, std::nextafter(node, 1.0)})
+      if (at >= data.dy_m.front() && at <= data.dy_m.back()) points.push_back(at);
+  for (const double dy : points) {
+    ctab_location where;
+    table.prelookup(dy, 0.0, where);
+    ASSERT_EQ(where.status, CTAB_OK);
+    const auto above = std::upper_bound(data.dy_m.begin(), data.dy_m.end(), dy);
+    const std::size_t expected =
+        std::min<std::size_t>(static_cast<std::size_t>(above - data.dy_m.begin()) - 1, data.n_dy() - 2);
+    ASSERT_EQ(where.i_dy, expected) << dy;
+    const double width = data.dy_m[expected + 1] - data.dy_m[expected];
+    ASSERT_NEAR(data.dy_m[expected] + where.f_dy * width, dy, 1e-15) << dy;
+    ASSERT_EQ(where.dy_m, dy);
+  }
+  ctab_location outside;
+  table.prelookup(7.6e-3 + 12e-3, 0.0, outside);
+  EXPECT_EQ(outside.status, CTAB_CLAMPED);
+  EXPECT_EQ(outside.i_dy, data.n_dy() - 2);
+  EXPECT_EQ(outside.f_dy, 1.0);
+}
+
+// Linear data stay exact across coarse and refined cells in both modes (PCHIP's weighted harmonic mean of equal
+// secants is that secant), and the jump rules hold in a refined cell: the flange appears at 6.5 mm, now inside
+// the cell (6.4, 6.5]'s neighbour: present from the nearer node on.
+TEST(LookupQuery, RefinedAxisReproducesLinearDataAndItsJumps) {
+  const TableData data = refined_synthetic();
+  for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
+    const Table table = load(data, mode);
+    for (const double dy : {-11.73e-3, 4.97e-3, 5.03e-3, 5.55e-3, 6.12e-3, 7.49e-3, 7.51e-3, 11.2e-3}) {
+      const ctab_result r = query(table, dy, 0.0, 1);
+      ASSERT_EQ(r.status, CTAB_OK);
+      for (std::size_t q = 0; q < kQuantities; ++q)
+        EXPECT_NEAR(quantity(r.patch[0], q), synthetic_value(q, 0, 1, dy, 60e3), 1e-9) << dy << " q " << q;
+      EXPECT_NEAR(r.roll_rad, 1e-3 * dy + 1e-9 * 60e3, 1e-15);
+    }
+    EXPECT_EQ(query(table, 6.44e-3, 0.0, 0).patch[1].present, 0);  // the jump cell (6.4, 6.5): lower half
+    EXPECT_EQ(query(table, 6.46e-3, 0.0, 0).patch[1].present, 1);  // upper half: the node at 6.5 mm
+    EXPECT_NEAR(query(table, 6.7e-3, 0.0, 0).patch[1].q[CTAB_NORMAL_FORCE_N], synthetic_value(0, 1, 0, 6.7e-3, 60e3),
+                1e-9);
+  }
+}
+
+// Where the refinement pays: a curve tabulated on the refined axis, interpolated between its nodes. Linear
+// interpolation's error falls as the step squared (10x finer: about 100x smaller), and PCHIP (Fritsch-Butland
+// slopes on unequal cells) stays below linear inside both zones. In the refined zone's end cells its node slope
+// at the zone's edge leans on the coarse neighbour's secant: there it may exceed linear's error (measured 1.9x).
+TEST(LookupQuery, RefinedZoneFollowsACurveAsItsStepSquared) {
+  TableData data = refined_synthetic();
+  const auto curve = [](double dy) { return 1e3 * (2.0 + std::sin(600.0 * dy)); };  // period 10.5 mm
+  for (std::size_t i = 0; i < data.n_dy(); ++i)
+    data.quantities[data.patch_index(i, 0, 0, 0) * kQuantities + CTAB_NORMAL_FORCE_N] = curve(data.dy_m[i]);
+  double worst[2][3] = {};  // [linear, pchip][coarse zone, refined zone's inner cells, its end cells]
+  for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
+    const Table table = load(data, mode);
+    for (double dy = -11.99e-3; dy < 11.99e-3; dy += 0.0137e-3) {
+      const double error = std::abs(query(table, dy, 0.0, 0).patch[0].q[CTAB_NORMAL_FORCE_N] - curve(dy));
+      const int zone = dy <= 5e-3 || dy >= 7.5e-3 ? 0 : dy > 5.1e-3 && dy < 7.4e-3 ? 1 : 2;
+      worst[mode == CTAB_PCHIP][zone] = std::max(worst[mode == CTAB_PCHIP][zone], error);
+    }
+  }
+  // Linear: h^2 |f''| / 8 = (1 mm)^2 x 360 / 8 = 45 N coarse, 0.45 N refined.
+  EXPECT_NEAR(worst[0][0], 45.0, 5.0);
+  EXPECT_LT(worst[0][1], 0.5);
+  EXPECT_GT(worst[0][1], 0.3);
+  EXPECT_LT(worst[1][0], worst[0][0]);
+  EXPECT_LT(worst[1][1], worst[0][1]);
+  EXPECT_LT(worst[1][2], 2.0 * std::max(worst[0][1], worst[0][2]));
+  std::printf(
+      "linear / PCHIP max error: coarse %.3g / %.3g N, refined inner %.3g / %.3g N, refined end cells %.3g / %.3g N\n",
+      worst[0][0], worst[1][0], worst[0][1], worst[1][1], worst[0][2], worst[1][2]);
 }
 
 }  // namespace

@@ -109,8 +109,14 @@ TEST(LookupStatus, BadTablesAreRefusedWithTheirStatus) {
   data.roll_rad[3] = INFINITY;
   EXPECT_EQ(refused(data), CTAB_ERR_CONTENT);
   data = test::make_synthetic();
-  data.dy_m[5] += 1e-5;
-  EXPECT_EQ(refused(data), CTAB_ERR_AXES) << "dy not uniform";
+  data.dy_m[5] = data.dy_m[4];
+  EXPECT_EQ(refused(data), CTAB_ERR_AXES) << "dy not strictly increasing";
+  data = test::make_synthetic();
+  data.dy_m[5] = data.dy_m[4] + 1e-3 / 65.0;  // a step below 1/64 of the mean step (1 mm)
+  EXPECT_EQ(refused(data), CTAB_ERR_AXES) << "dy refined beyond kMaxDyRefinement";
+  data.dy_m[5] = data.dy_m[4] + 1e-3 / 60.0;  // within it: a refined axis loads
+  Table refined;
+  EXPECT_TRUE(refined.load(data, {}).ok());
   data = test::make_synthetic();
   data.case_status[2] = 9;
   EXPECT_EQ(refused(data), CTAB_ERR_CONTENT);

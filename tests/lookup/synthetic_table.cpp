@@ -1,6 +1,7 @@
 // Synthetic tables for the lookup tests (see synthetic_table.hpp).
 #include "synthetic_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -14,8 +15,16 @@ double synthetic_value(std::size_t q, std::size_t s, std::size_t w, double dy_m,
 
 TableData make_synthetic(const SyntheticOptions& o) {
   TableData data;
-  const auto n_dy = static_cast<std::size_t>(std::lround((o.dy_max_m - o.dy_min_m) / o.dy_step_m)) + 1;
-  for (std::size_t i = 0; i < n_dy; ++i) data.dy_m.push_back(o.dy_min_m + o.dy_step_m * static_cast<double>(i));
+  const auto n_uniform = static_cast<std::size_t>(std::lround((o.dy_max_m - o.dy_min_m) / o.dy_step_m)) + 1;
+  for (std::size_t i = 0; i < n_uniform; ++i) data.dy_m.push_back(o.dy_min_m + o.dy_step_m * static_cast<double>(i));
+  if (o.refine_step_m > 0.0) {
+    for (double dy = o.refine_from_m; dy <= o.refine_to_m + 1e-12; dy += o.refine_step_m) data.dy_m.push_back(dy);
+    std::sort(data.dy_m.begin(), data.dy_m.end());
+    data.dy_m.erase(std::unique(data.dy_m.begin(), data.dy_m.end(),
+                                [](double a, double b) { return std::abs(a - b) < 1e-12; }),
+                    data.dy_m.end());
+  }
+  const std::size_t n_dy = data.dy_m.size();
   for (std::size_t j = 0; j < o.n_second; ++j) data.second.push_back(60e3 + 20e3 * static_cast<double>(j));
   data.second_axis = SecondAxis::VerticalLoad;
   data.n_slots = 3;
@@ -42,7 +51,7 @@ TableData make_synthetic(const SyntheticOptions& o) {
           }
         }
         // Jumps: the flange appears, the spare slot moves (in the cells containing those points).
-        const double next = dy + o.dy_step_m;
+        const double next = i + 1 < n_dy ? data.dy_m[i + 1] : dy;
         if (i + 1 < n_dy && dy < flange_from && next >= flange_from)
           data.jumps.push_back({static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i),
                                 static_cast<std::uint8_t>(w), 1, JumpKind::Appears});
@@ -52,7 +61,8 @@ TableData make_synthetic(const SyntheticOptions& o) {
       }
     }
   if (o.failed_case) {
-    const auto i = static_cast<std::size_t>(std::lround((-8e-3 - o.dy_min_m) / o.dy_step_m));
+    std::size_t i = 0;  // the node at -8 mm
+    while (i + 1 < n_dy && data.dy_m[i] < -8e-3 - 1e-12) ++i;
     data.case_status[data.case_index(i, 0, 0)] = -1;
     for (std::size_t s = 0; s < 3; ++s) {
       const std::size_t p = data.patch_index(i, 0, 0, s);

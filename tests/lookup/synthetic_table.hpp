@@ -19,6 +19,9 @@ struct SyntheticOptions {
   double moves_at_m = -4.5e-3;           //!< spare slot's y_rail jumps by 5 mm here
   bool failed_case = false;              //!< right wheel at dy = -8 mm (first row) fails: MaxIterations
   bool second_row_flange_later = false;  //!< with n_second > 1: rows >= 1 get the flange 1 mm later
+  //! A refined zone of the dy axis: nodes from refine_from_m to refine_to_m every refine_step_m between the
+  //! uniform ones (0: none).
+  double refine_from_m = 0.0, refine_to_m = 0.0, refine_step_m = 0.0;
 };
 
 //! The value of quantity q of slot s, wheel w, at (dy, second) where the patch exists (linear in both).

@@ -347,6 +347,16 @@ TEST(TableFormat, CorruptContentsAreRejectedWithFileDatasetAndIndex) {
                  TableStatus::InvalidContent, {"/jumps[0]"});
 }
 
+// The dy axis may be refined locally (steps down to 1/64 of its mean step), never repeat or go backwards.
+TEST(TableFormat, RefinedDyAxisReadsAndBadOnesAreRejected) {
+  const double refined = 1.5e-3, repeated = 1e-3, too_fine = 1.01e-3;  // dy[4] of -2 ... 3 mm in 1 mm steps
+  EXPECT_TRUE(read_edited("refined.h5", [&](hid_t f) { poke(f, "/axes/lateral_displacement_m", 4, &refined); }).ok());
+  expect_failure(read_edited("repeated.h5", [&](hid_t f) { poke(f, "/axes/lateral_displacement_m", 4, &repeated); }),
+                 TableStatus::InvalidContent, {"/axes/lateral_displacement_m[4]", "strictly increasing"});
+  expect_failure(read_edited("too_fine.h5", [&](hid_t f) { poke(f, "/axes/lateral_displacement_m", 4, &too_fine); }),
+                 TableStatus::InvalidContent, {"/axes/lateral_displacement_m[4]", "finer than 1/64"});
+}
+
 TEST(TableFormat, BadAttributesAreRejectedBeforeAllocating) {
   const std::int64_t huge = 200000, zero = 0, one = 1;
   const double one_and_a_half = 1.5, one_float = 1.0;

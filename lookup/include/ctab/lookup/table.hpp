@@ -41,8 +41,9 @@ class Table {
   [[nodiscard]] std::uint32_t n_second() const noexcept { return static_cast<std::uint32_t>(second_.size()); }
   [[nodiscard]] std::uint32_t n_slots() const noexcept { return n_slots_; }
   [[nodiscard]] std::uint32_t strip_samples() const noexcept { return strip_samples_; }
-  [[nodiscard]] double dy_min() const noexcept { return dy0_; }
-  [[nodiscard]] double dy_max() const noexcept { return dy0_ + ddy_ * static_cast<double>(n_dy_ - 1); }
+  [[nodiscard]] double dy_min() const noexcept { return dy_.front(); }
+  [[nodiscard]] double dy_max() const noexcept { return dy_.back(); }
+  [[nodiscard]] const std::vector<double>& dy_axis() const noexcept { return dy_; }
   [[nodiscard]] const std::vector<double>& second_axis() const noexcept { return second_; }
   [[nodiscard]] SecondAxis second_axis_kind() const noexcept { return second_kind_; }
   [[nodiscard]] ctab_interpolation interpolation() const noexcept { return interpolation_; }
@@ -65,7 +66,7 @@ class Table {
                             std::uint32_t* count) const noexcept;
 
  private:
-  //! Fraction in the dy cell, the nearest-neighbour step and the Hermite basis (slope terms times ddy).
+  //! Fraction in the dy cell, the nearest-neighbour step and the Hermite basis (slope terms times the cell's width).
   struct DyBasis {
     double f, step, h00, h01, h10, h11;
   };
@@ -81,6 +82,8 @@ class Table {
   [[nodiscard]] std::size_t case_(std::size_t i_dy, std::size_t i_second, std::size_t wheel) const noexcept {
     return (i_dy * second_.size() + i_second) * kWheels + wheel;
   }
+  //! The dy axis, its cells' widths and the index of prelookup.
+  void build_dy_index(const std::vector<double>& dy_m, const std::vector<double>& width, bool uniform);
   //! Value at `offset` of case `c`'s record, as double, whatever the storage precision.
   [[nodiscard]] double field(std::size_t c, std::size_t offset) const noexcept;
   template <typename T>
@@ -91,7 +94,12 @@ class Table {
   std::uint32_t n_dy_ = 0;
   std::uint32_t n_slots_ = 0;
   std::uint32_t strip_samples_ = 0;
-  double dy0_ = 0.0, ddy_ = 0.0, inv_ddy_ = 0.0;
+  // The dy axis and its bounded-time search: arithmetic on a uniform axis; on a refined one dy_index_[k] is the
+  // cell holding dy_.front() + k x the smallest step, so that a point's cell is that entry's or a neighbour.
+  std::vector<double> dy_, cell_width_, inv_cell_width_;
+  std::vector<std::uint32_t> dy_index_;
+  double inv_index_step_ = 0.0, inv_mean_step_ = 0.0;
+  bool uniform_dy_ = true;
   std::vector<double> second_;
   SecondAxis second_kind_ = SecondAxis::VerticalLoad;
   ctab_interpolation interpolation_ = CTAB_LINEAR;

@@ -24,6 +24,9 @@ inline constexpr std::size_t kWheels = 2;              //!< index 0: right wheel
 inline constexpr std::size_t kDefaultSlots = 3;        //!< patch slots unless the config asks for more
 inline constexpr std::size_t kMaxSlots = 16;           //!< most patch slots a table may have
 inline constexpr std::size_t kMaxStripSamples = 4096;  //!< most strip-profile samples per patch
+//! The dy axis is uniform or refined locally (finer steps where the contact changes fast); no step may be finer
+//! than 1/kMaxDyRefinement of its mean step (the lookup's index holds one entry per smallest step).
+inline constexpr double kMaxDyRefinement = 64.0;
 
 //! How a patch changes between two neighbouring lateral shifts (a cell of the dy axis).
 enum class JumpKind : std::uint8_t {
@@ -73,7 +76,7 @@ struct PatchQuantities {
 };
 
 struct Table {
-  std::vector<double> lateral_displacement_m;  //!< axis 0, uniform, strictly increasing [m] (n_dy)
+  std::vector<double> lateral_displacement_m;  //!< axis 0, strictly increasing, uniform or refined [m] (n_dy)
   std::string second_axis_name;                //!< "vertical_load_N", "normal_load_N" or "approach_m"
   std::string second_axis_units;               //!< "N" or "m"
   std::vector<double> second_axis;             //!< axis 1, strictly increasing, in second_axis_units (n_second >= 1)
@@ -116,7 +119,7 @@ inline constexpr std::int8_t kMethodNotRecorded = -1;
 inline constexpr std::int8_t kMaxMethodValue = 4;
 
 //! Finds the jumps of a table from its presence flags and rail contact points: a slot that appears or
-//! disappears between neighbours, or whose y_rail_m moves by more than max(1 mm, 10 dy steps).
+//! disappears between neighbours, or whose y_rail_m moves by more than max(1 mm, 10 of the axis's largest dy steps).
 [[nodiscard]] std::vector<Jump> detect_jumps(const Table& table);
 
 //! Outcome of reading or writing a table (no exceptions in this module).
