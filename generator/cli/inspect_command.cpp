@@ -1,5 +1,6 @@
 // `ctab inspect FILE [--json]`: validate a table and print its schema, provenance, axes, statuses, patches per
 // slot and the contact jumps stored in the file.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -31,11 +32,14 @@ nlohmann::ordered_json summary(const tables::Table& t) {
   for (const auto& [name, value] : t.number_attributes) out["provenance"][name] = value;
   for (const auto& [name, value] : t.integer_attributes) out["provenance"][name] = value;
   const auto& dy = t.lateral_displacement_m;
-  out["axes"]["lateral_displacement_m"] = {{"units", "m"},
-                                           {"count", dy.size()},
-                                           {"first", dy.front()},
-                                           {"last", dy.back()},
-                                           {"step", dy.size() > 1 ? dy[1] - dy[0] : 0.0}};
+  double largest_step = 0.0, smallest_step = dy.size() > 1 ? dy[1] - dy[0] : 0.0;  // refined axes: not equal
+  for (std::size_t i = 1; i < dy.size(); ++i) {
+    largest_step = std::max(largest_step, dy[i] - dy[i - 1]);
+    smallest_step = std::min(smallest_step, dy[i] - dy[i - 1]);
+  }
+  out["axes"]["lateral_displacement_m"] = {{"units", "m"},         {"count", dy.size()},
+                                           {"first", dy.front()},  {"last", dy.back()},
+                                           {"step", largest_step}, {"smallest_step", smallest_step}};
   out["axes"]["second"] = {{"name", t.second_axis_name}, {"units", t.second_axis_units}, {"values", t.second_axis}};
   out["n_slots"] = t.n_slots;
   out["strip_samples"] = t.strip_samples;
@@ -67,8 +71,11 @@ void print_text(const std::string& path, const nlohmann::ordered_json& s) {
     else std::printf("  %-22s %.10g\n", name.c_str(), value.get<double>());
   }
   const auto& dy = s["axes"]["lateral_displacement_m"];
-  std::printf("axes: lateral_displacement_m %zu values, %g .. %g m, step %g m\n", dy["count"].get<std::size_t>(),
+  std::printf("axes: lateral_displacement_m %zu values, %g .. %g m, step %g m", dy["count"].get<std::size_t>(),
               dy["first"].get<double>(), dy["last"].get<double>(), dy["step"].get<double>());
+  const double smallest = dy["smallest_step"].get<double>();
+  if (smallest < dy["step"].get<double>() * (1.0 - 1e-6)) std::printf(", refined to %g m", smallest);
+  std::printf("\n");
   const auto& second = s["axes"]["second"];
   std::printf("      %s %zu value(s) in %s: %s\n", second["name"].get<std::string>().c_str(), second["values"].size(),
               second["units"].get<std::string>().c_str(), second["values"].dump().c_str());
@@ -82,7 +89,7 @@ void print_text(const std::string& path, const nlohmann::ordered_json& s) {
     std::printf(" %zu: %zu", slot, s["patches_per_slot"][slot].get<std::size_t>());
   std::printf("\ncontact jumps: %zu\n", s["jumps"].size());
   for (const auto& j : s["jumps"])
-    std::printf("  %-10s %s wheel, slot %d, %s = %g: dy %.2f -> %.2f mm\n", j["kind"].get<std::string>().c_str(),
+    std::printf("  %-10s %s wheel, slot %d, %s = %g: dy %.3f -> %.3f mm\n", j["kind"].get<std::string>().c_str(),
                 j["wheel"].get<std::string>().c_str(), j["slot"].get<int>(), second["name"].get<std::string>().c_str(),
                 j["second"].get<double>(), j["dy_low_m"].get<double>() * 1e3, j["dy_high_m"].get<double>() * 1e3);
 }

@@ -1,6 +1,7 @@
 // Table configs: the embedded default equals examples/configs/default.toml; every error names key and line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -184,4 +185,81 @@ TEST(TableConfig, TrackErrorsNameTheConfigLine) {
     EXPECT_EQ(std::string(e.what()).rfind("c.toml:2: 'track.gauge_height_m': ", 0), 0u) << e.what();
   }
   EXPECT_NO_THROW((void)place_profiles(parse_table_config(kDefaultTableConfig, "default"), wheel, rail));
+}
+
+// [axes] lateral_refinement_m: zones of finer steps whose nodes join the dy axis (the coarse nodes keep their
+// values); every zone error names the key and its line.
+TEST(TableConfig, RefinementZonesJoinTheDyAxis) {
+  const std::string coarse = "[axes]\nlateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 0.5e-3 }\n";
+  const TableConfig plain = parse_table_config(coarse + "vertical_load_N = 78.5e3\n", "c.toml");
+  const TableConfig refined = parse_table_config(
+      coarse +
+          "lateral_refinement_m = [ { start = 0.2e-3, stop = 0.6e-3, step = 0.1e-3 } ]\nvertical_load_N = 78.5e3\n",
+      "c.toml");
+  ASSERT_EQ(refined.lateral_displacement_m.size(), 9u);  // -1, -0.5, 0, 0.2, 0.3, 0.4, 0.5, 0.6, 1 mm
+  const std::vector<double> expected = {-1e-3, -0.5e-3, 0.0, 0.2e-3, 0.3e-3, 0.4e-3, 0.5e-3, 0.6e-3, 1e-3};
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_NEAR(refined.lateral_displacement_m[i], expected[i], 1e-15) << i;
+  for (const std::size_t i : {0u, 1u, 2u, 6u, 8u})  // the coarse nodes: the very values of the plain axis
+    EXPECT_EQ(std::count(plain.lateral_displacement_m.begin(), plain.lateral_displacement_m.end(),
+                         refined.lateral_displacement_m[i]),
+              1)
+        << i;
+
+  const auto zone_error = [&](const std::string& zones) {
+    return error_of(coarse + "lateral_refinement_m = " + zones + "\nvertical_load_N = 78.5e3\n");
+  };
+  EXPECT_EQ(zone_error("[ { start = 0.5e-3, stop = 1.5e-3, step = 0.1e-3 } ]"),
+            "c.toml:3: 'axes.lateral_refinement_m': a zone must lie within the axis (-0.001 m .. 0.001 m)");
+  EXPECT_EQ(zone_error("[ { start = 0, stop = 1e-3, step = 0.5e-3 } ]"),
+            "c.toml:3: 'axes.lateral_refinement_m': a zone's step must be finer than the axis's (0.0005 m)");
+  EXPECT_EQ(zone_error("0.1e-3"),
+            "c.toml:3: 'axes.lateral_refinement_m': expected a list of zones {start, stop, step}");
+  EXPECT_EQ(zone_error("[ 0.1e-3 ]"),
+            "c.toml:3: 'axes.lateral_refinement_m': expected a list of zones {start, stop, step}");
+  EXPECT_EQ(zone_error("[ { start = 0, stop = 1e-4, stride = 1e-5 } ]"),
+            "c.toml:3: 'axes.lateral_refinement_m.stride': unknown key (expected start, stop, step)");
+  EXPECT_EQ(zone_error("[ { start = 0.2e-3, stop = 0.2001e-3, step = 0.0001e-3 } ]")
+                .rfind("c.toml:3: 'axes.lateral_refinement_m': a step of 1e-07 m at dy 0.0002 m is finer than 1/64 of "
+                       "the refined axis's mean step",
+                       0),
+            0u);
+}
+
+// A refined table: its rows at the coarse nodes are the plain table's, bit for bit (each case is solved on its
+// own), at 1 and 2 threads alike; a zone on one side only turns the mirror off (the left wheel solved itself).
+TEST(TableConfig, RefinedTableKeepsTheCoarseRowsAndTheMirrorOnlyWhenSymmetric) {
+  const std::string head =
+      "[solver]\nmode = \"wheelset\"\n[axes]\nlateral_displacement_m = { start = -7e-3, stop = 7e-3, "
+      "step = 1e-3 }\nvertical_load_N = 78.5e3\n";
+  const std::string both = "lateral_refinement_m = [ { start = -6.5e-3, stop = -6e-3, step = 0.25e-3 }, "
+                           "{ start = 6e-3, stop = 6.5e-3, step = 0.25e-3 } ]\n";
+  const std::string one = "lateral_refinement_m = [ { start = 6e-3, stop = 6.5e-3, step = 0.25e-3 } ]\n";
+  const auto generate = [&](const std::string& zones, int threads) {
+    GeneratorInfo info;
+    info.threads = threads;
+    return generate_table(parse_table_config(head + zones, "r.toml"), info);
+  };
+  const ctab::tables::Table plain = generate("", 2), symmetric = generate(both, 2), symmetric_1 = generate(both, 1),
+                            one_sided = generate(one, 2);
+  EXPECT_EQ(symmetric.n_dy(), 15u + 4u);
+  EXPECT_EQ(one_sided.n_dy(), 15u + 2u);
+  EXPECT_EQ(symmetric.text_attributes.at("mirrored").substr(0, 4), "true");
+  EXPECT_EQ(one_sided.text_attributes.at("mirrored"), "false");
+  EXPECT_EQ(symmetric.patch.normal_force_N, symmetric_1.patch.normal_force_N);
+  EXPECT_EQ(symmetric.patch.strip_peak_pressure_Pa, symmetric_1.patch.strip_peak_pressure_Pa);
+  for (const ctab::tables::Table* refined : {&symmetric, &one_sided})
+    for (std::size_t i = 0; i < plain.n_dy(); ++i) {
+      const auto at = std::find(refined->lateral_displacement_m.begin(), refined->lateral_displacement_m.end(),
+                                plain.lateral_displacement_m[i]);
+      ASSERT_NE(at, refined->lateral_displacement_m.end()) << i;
+      const auto j = static_cast<std::size_t>(at - refined->lateral_displacement_m.begin());
+      EXPECT_EQ(refined->roll_rad[j], plain.roll_rad[i]) << i;
+      for (std::size_t wheel = 0; wheel < 2; ++wheel)
+        for (std::size_t slot = 0; slot < plain.n_slots; ++slot) {
+          const std::size_t a = plain.patch_index(i, 0, wheel, slot), b = refined->patch_index(j, 0, wheel, slot);
+          EXPECT_EQ(refined->patch.present[b], plain.patch.present[a]) << i;
+          EXPECT_EQ(refined->patch.normal_force_N[b], plain.patch.normal_force_N[a]) << i << " wheel " << wheel;
+        }
+    }
 }

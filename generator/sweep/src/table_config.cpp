@@ -279,11 +279,62 @@ void read_solver(const Reader& r, TableConfig& c) {
   c.warm_start = r.flag("solver", "warm_start", c.warm_start);
 }
 
+std::string metres_text(double value) {
+  std::ostringstream text;
+  text << value << " m";
+  return text.str();
+}
+
+// [axes] lateral_refinement_m: zones {start, stop, step} of finer steps whose nodes join the dy axis (where the
+// contact changes fast: the flange climb, two-point contact). A node within 1e-9 of a step of one already there is
+// that node (the coarse axis keeps its values); no step may end finer than tables::kMaxDyRefinement allows.
+std::vector<double> refined_axis(const Reader& r, const toml::node& node, const std::vector<double>& axis) {
+  const std::string key = "axes.lateral_refinement_m";
+  const toml::array* zones = node.as_array();
+  if (!zones || zones->empty()) r.fail(node, key, "expected a list of zones {start, stop, step}");
+  if (axis.size() < 2) r.fail(node, key, "needs a lateral_displacement_m axis of at least two values");
+  const double coarse = axis[1] - axis[0], same = 1e-9 * coarse;
+  std::vector<std::pair<double, bool>> nodes;  // value, on the coarse axis
+  for (const double v : axis) nodes.emplace_back(v, true);
+  for (const toml::node& zone : *zones) {
+    if (!zone.is_table()) r.fail(zone, key, "expected a list of zones {start, stop, step}");
+    const std::vector<double> zone_nodes = r.axis(zone, key);
+    if (zone_nodes.size() > 1 && !(zone_nodes[1] - zone_nodes[0] < coarse - same))
+      r.fail(zone, key, "a zone's step must be finer than the axis's (" + metres_text(coarse) + ")");
+    if (zone_nodes.front() < axis.front() - same || zone_nodes.back() > axis.back() + same)
+      r.fail(zone, key,
+             "a zone must lie within the axis (" + metres_text(axis.front()) + " .. " + metres_text(axis.back()) + ")");
+    for (const double v : zone_nodes) nodes.emplace_back(v, false);
+  }
+  std::stable_sort(nodes.begin(), nodes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<double> merged;
+  bool last_coarse = false;
+  for (const auto& [value, on_axis] : nodes) {
+    if (!merged.empty() && value - merged.back() <= same) {
+      if (on_axis && !last_coarse) merged.back() = value, last_coarse = true;
+      continue;
+    }
+    merged.push_back(value);
+    last_coarse = on_axis;
+  }
+  if (merged.size() > kMaxAxisPoints) r.fail(node, key, "more than " + std::to_string(kMaxAxisPoints) + " dy values");
+  const double mean_step = (merged.back() - merged.front()) / static_cast<double>(merged.size() - 1);
+  for (std::size_t i = 1; i < merged.size(); ++i)
+    if (merged[i] - merged[i - 1] < mean_step / tables::kMaxDyRefinement)
+      r.fail(node, key,
+             "a step of " + metres_text(merged[i] - merged[i - 1]) + " at dy " + metres_text(merged[i - 1]) +
+                 " is finer than 1/" + std::to_string(static_cast<int>(tables::kMaxDyRefinement)) +
+                 " of the refined axis's mean step (" + metres_text(mean_step) + ")");
+  return merged;
+}
+
 void read_axes(const Reader& r, TableConfig& c) {
   const toml::node* dy = r.find("axes", "lateral_displacement_m");
   if (!dy) r.fail_at(r.line("axes", ""), "axes.lateral_displacement_m", "required ({start, stop, step})");
   if (!dy->is_table()) r.fail(*dy, "axes.lateral_displacement_m", "expected {start, stop, step} (a uniform axis)");
   c.lateral_displacement_m = r.axis(*dy, "axes.lateral_displacement_m");
+  if (const toml::node* zones = r.find("axes", "lateral_refinement_m"))
+    c.lateral_displacement_m = refined_axis(r, *zones, c.lateral_displacement_m);
   const toml::node* load_node = nullptr;
   for (const auto& [kind, key] :
        {std::pair{LoadKind::VerticalForce, "vertical_load_N"}, std::pair{LoadKind::NormalForce, "normal_load_N"},
@@ -367,7 +418,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
        {"solver",
         {"mode", "method", "tolerance", "strip_width_m", "reference_point", "reference_angle", "surface",
          "warm_start"}},
-       {"axes", {"lateral_displacement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
+       {"axes", {"lateral_displacement_m", "lateral_refinement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;
   c.source = source;

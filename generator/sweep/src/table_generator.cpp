@@ -84,9 +84,12 @@ ProfileTable load_checked(const TableConfig& config, const std::string& spec, Pr
 }
 
 // One wheel and one rail profile for both sides and a symmetric dy axis: the left wheel at dy is the right at -dy.
+// Every node has its mirror image -dy (to 1e-9 of the span): a refined zone on one side only breaks the symmetry.
 bool symmetric_axis(const std::vector<double>& dy_m) {
   const double span = std::max(std::abs(dy_m.front()), std::abs(dy_m.back()));
-  return std::abs(dy_m.front() + dy_m.back()) <= 1e-9 * span + 1e-15;
+  for (std::size_t i = 0, n = dy_m.size(); i < n; ++i)
+    if (std::abs(dy_m[i] + dy_m[n - 1 - i]) > 1e-9 * span + 1e-15) return false;
+  return true;
 }
 
 void check_strip_width(const TableConfig& config) {

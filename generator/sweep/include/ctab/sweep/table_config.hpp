@@ -66,7 +66,8 @@ struct TableConfig {
   //! (table_generator.hpp, warm_start_previous_rows); entries then agree with cold starts within the solver
   //! tolerance instead of bit for bit, and stay bit-identical across threads, shards and MPI ranks.
   bool warm_start = false;
-  std::vector<double> lateral_displacement_m;  //!< uniform axis [m]
+  //! dy axis [m]: uniform ({start, stop, step}), with the nodes of [axes] lateral_refinement_m's zones merged in
+  std::vector<double> lateral_displacement_m;
   LoadKind load_kind = LoadKind::VerticalForce;
   std::vector<double> load_values;  //!< second axis, or one fixed value [N or m]
   bool second_axis = false;         //!< true when the load or approach is an axis of the table
