@@ -277,7 +277,7 @@ TEST(Table, VerticalLoadIdentityOnEveryCaseOfTheDefaultTable) {
   GeneratorInfo info;
   info.threads = 2;
   const Table table = generate_table(parse_table_config(kDefaultTableConfig, "default"), info);
-  ASSERT_EQ(table.cases(), 241u);
+  ASSERT_EQ(table.cases(), 265u);
   const double residual = identity_residual(table, true);
   std::printf("default table: max relative residual of the vertical-load identity %.3g\n", residual);
   // Under-resolved (fewer than 8 strips of 0.2 mm across a patch with >= 5 % of the load): only the four cases at

@@ -46,6 +46,9 @@ warm_start = false       # true: start each solve from its neighbour in dy (fast
 
 [axes]
 lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.1e-3 }
+# finer steps where the contact climbs from flange root to flank (the lookup interpolates there to 0.3 % in force)
+lateral_refinement_m = [ { start = -6.5e-3, stop = -6.1e-3, step = 0.025e-3 },
+                         { start = 6.1e-3, stop = 6.5e-3, step = 0.025e-3 } ]
 vertical_load_N = 78.5e3 # one value: fixed; a list or {start, stop, step}: a second axis
                          # (or normal_load_N, or approach_m)
 
@@ -318,6 +321,17 @@ std::vector<double> refined_axis(const Reader& r, const toml::node& node, const 
     last_coarse = on_axis;
   }
   if (merged.size() > kMaxAxisPoints) r.fail(node, key, "more than " + std::to_string(kMaxAxisPoints) + " dy values");
+  // Zones that mirror each other give nodes that mirror each other exactly (the mirrored sweep solves the left wheel
+  // at -dy as the right one): an axis symmetric to 1e-9 of a step is made symmetric bit for bit.
+  bool symmetric = true;
+  for (std::size_t i = 0, n = merged.size(); i < n; ++i)
+    symmetric = symmetric && std::abs(merged[i] + merged[n - 1 - i]) <= same;
+  for (std::size_t i = 0, n = merged.size(); symmetric && i < n / 2; ++i) {
+    const double half = 0.5 * (merged[n - 1 - i] - merged[i]);
+    merged[i] = -half;
+    merged[n - 1 - i] = half;
+  }
+  if (symmetric && merged.size() % 2 == 1) merged[merged.size() / 2] = 0.0;
   const double mean_step = (merged.back() - merged.front()) / static_cast<double>(merged.size() - 1);
   for (std::size_t i = 1; i < merged.size(); ++i)
     if (merged[i] - merged[i - 1] < mean_step / tables::kMaxDyRefinement)
