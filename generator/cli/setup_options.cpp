@@ -160,10 +160,10 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
                "--reference-angle",
                [&c](const std::string& name) { c.reference_angle = gen::parse_reference_angle(name); },
                "inclination of a patch's contact plane: tangent (the rail's at the reference point) or "
-               "interpenetration-mean (CONTACT's: the mean over the interpenetration region); default: the reference "
-               "point's own (deepest: tangent; interpenetration-centre: interpenetration-mean; README \"Flange and "
+               "interpenetration-mean (CONTACT's: the mean over the interpenetration region; README \"Flange and "
                "flank\")")
-            ->check(CLI::IsMember({std::string(gen::kReferenceAngleTangent), std::string(gen::kReferenceAngleMean)})));
+            ->check(CLI::IsMember({std::string(gen::kReferenceAngleTangent), std::string(gen::kReferenceAngleMean)}))
+            ->default_str(std::string(gen::kReferenceAngleMean)));
     add(app.add_option_function<std::string>(
                "--surface", [&c](const std::string& name) { c.surface = *gen::parse_contact_surface(name); },
                "contact surface of a patch: planar (one plane) or conformal (curved surface midway between the "

@@ -163,8 +163,10 @@ TEST(CliMethod, ReferencePointMovesTheFlankContactPlane) {
 // provenance; tangent with CONTACT's reference point, or a bad name, is an input error (exit 2) naming the line.
 TEST(CliMethod, ReferenceAngleInclinesTheDeepestPointsPlane) {
   const auto solve = [](const std::vector<std::string>& extra) { return solve_flank(extra)["patches"][0]; };
-  const auto tangent = solve({}), centre = solve({"--reference-point", "interpenetration-centre"});
+  const auto tangent = solve({"--reference-angle", "tangent"}),
+             centre = solve({"--reference-point", "interpenetration-centre"});
   const auto mean = solve({"--reference-angle", "interpenetration-mean"});
+  EXPECT_EQ(solve({}), mean);  // the default
   constexpr double kDeg = 3.14159265358979323846 / 180.0;
   EXPECT_EQ(mean["y_rail_m"].get<double>(), tangent["y_rail_m"].get<double>());
   EXPECT_NEAR(mean["plane_angle_rad"].get<double>(), centre["plane_angle_rad"].get<double>(), 0.02 * kDeg);

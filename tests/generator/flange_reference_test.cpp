@@ -129,14 +129,26 @@ TEST_F(FlangeReference, FlankReferencePointFollowsTheShift) {
   EXPECT_GT(lowest, -69.6);  // CONTACT: -68.6 ... -69.4 deg
 }
 
-// The default keeps the deepest rigid point: on the flank the plane stays at the rail's -69.99 deg.
-TEST_F(FlangeReference, DefaultKeepsTheDeepestPoint) {
+// The default keeps the deepest rigid point and inclines its plane at CONTACT's reference angle: on the flank the
+// rail point stays where the rail's slope is -69.99 deg, the plane takes CONTACT's rule's angle (within 0.02 deg);
+// with the tangent (the earlier default) the plane is the rail's -69.99 deg.
+TEST_F(FlangeReference, DefaultKeepsTheDeepestPointAtContactsAngle) {
   CTAB_REQUIRE_SHARED();
-  const WheelContact c = solve_wheel_contact(*side_, 7.5e-3, 0.0, effective_modulus(kSteel, kSteel),
-                                             LoadKind::VerticalForce, kLoad_N, WheelRailOptions{});
-  ASSERT_EQ(c.status, SolveStatus::Converged) << c.detail;
-  ASSERT_EQ(c.patches.size(), 1u);
-  EXPECT_NEAR(c.patches.front().plane_angle_rad * kDegPerRad, -69.99, 0.01);
+  const auto solve = [&](const WheelRailOptions& options) {
+    const WheelContact c = solve_wheel_contact(*side_, 7.5e-3, 0.0, effective_modulus(kSteel, kSteel),
+                                               LoadKind::VerticalForce, kLoad_N, options);
+    EXPECT_EQ(c.status, SolveStatus::Converged) << c.detail;
+    EXPECT_EQ(c.patches.size(), 1u);
+    return c.patches.front();
+  };
+  WheelRailOptions tangent;
+  tangent.reference_angle = ReferenceAngle::Tangent;
+  const ContactPatch by_default = solve(WheelRailOptions{}), at_tangent = solve(tangent),
+                     at_centre = solve(centred_options());
+  EXPECT_NEAR(at_tangent.plane_angle_rad * kDegPerRad, -69.99, 0.01);
+  EXPECT_EQ(by_default.y_rail_m, at_tangent.y_rail_m);
+  EXPECT_NEAR(by_default.plane_angle_rad * kDegPerRad, at_centre.plane_angle_rad * kDegPerRad, 0.02);
+  EXPECT_GT(std::abs(by_default.plane_angle_rad - at_tangent.plane_angle_rad) * kDegPerRad, 0.3);
 }
 
 // The reference point itself against CONTACT's at the flange root and flank (a single minimum there): measured

@@ -1,9 +1,10 @@
-// Accuracy of the interpolated default table (0.1 mm) against a direct solve of the same case (the generator's
-// per-case API) at 1000 random off-grid lateral shifts, linear and PCHIP, where no jump lies between the
-// neighbours (cell rule Interpolate); prints the error distributions (median, p95, max) split into cases with one
-// patch and with two (tread and flange sharing the load), and what happens in cells with a jump.
-// Targets (issue 9): force and area 0.5 %, contact points 0.01 mm. Met with one patch; with two patches the load
-// moves from tread to flange within a few table steps and the max error is larger (lookup/README.md "Accuracy").
+// Accuracy of the interpolated default table (0.1 mm, 0.025 mm at |dy| 6.1-6.5 mm) against a direct solve of the same
+// case (the generator's per-case API) at 1000 random off-grid lateral shifts, linear and PCHIP, where no jump lies
+// between the neighbours (cell rule Interpolate); prints the error distributions (median, p95, max) split into cases
+// with one patch and with two (tread and flange sharing the load), and what happens in cells with a jump. Targets
+// (issue 9): force and area 0.5 %, contact points 0.01 mm. Met with one patch (the flange patch's force since the
+// refined steps of its climb from root to flank); with two patches the load moves from tread to flange within a few
+// table steps and the max error is larger (lookup/README.md "Accuracy").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -121,7 +122,8 @@ class LookupAccuracy : public ::testing::Test {
                          dy);
       }
     }
-    std::printf("%s, default table (dy step 0.1 mm), 1000 random dy, right wheel, cells without a jump:\n",
+    std::printf("%s, default table (dy step 0.1 mm, 0.025 mm at |dy| 6.1-6.5 mm), 1000 random dy, right wheel, cells "
+                "without a jump:\n",
                 mode == CTAB_PCHIP ? "PCHIP" : "linear");
     const std::pair<Errors*, const char*> groups[] = {{&out.tread_only, "tread patch only"},
                                                       {&out.two_patches, "tread and flange"},
@@ -150,9 +152,11 @@ tables::Table* LookupAccuracy::generated_ = nullptr;
 gen::SweepSetup* LookupAccuracy::setup_ = nullptr;
 
 // Tread contact (the single patch of |dy| up to about 4.6 mm): force and area within the targets as maxima,
-// contact points at the 95th percentile, linear and PCHIP.
-// With the flange in contact the load and the contact move fast with dy: the figures are reported (README), and
-// the bars below guard the measured maxima against regression; they are above the issue's targets.
+// contact points at the 95th percentile, linear and PCHIP. The flange patch alone: its force within the target as a
+// maximum (measured 0.30 / 0.06 %; 3.5 / 3.3 % without the refined steps at |dy| 6.1-6.5 mm, where the contact
+// climbs from root to flank within 0.07 mm).
+// Where tread and flange share the load, the load and the contact move fast with dy: the figures are reported
+// (README), and the bars below guard the measured maxima against regression; they are above the issue's targets.
 TEST_F(LookupAccuracy, TreadContactMeetsTheTargets) {
   for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
     Outcome out = measure(mode);
@@ -160,13 +164,14 @@ TEST_F(LookupAccuracy, TreadContactMeetsTheTargets) {
     EXPECT_LE(out.tread_only.force.at(1.0), 5e-3);
     EXPECT_LE(out.tread_only.area.at(1.0), 5e-3);
     EXPECT_LE(out.tread_only.point.at(0.95), 0.01e-3);
-    EXPECT_LE(out.tread_only.point.at(1.0), 0.2e-3) << "regression guard: the tread point moves fast where the other "
-                                                       "wheel's flange jump changes the roll (target 0.01 mm)";
+    EXPECT_LE(out.tread_only.point.at(1.0), 0.05e-3) << "regression guard: the tread point moves fast where the other "
+                                                        "wheel's flange jump changes the roll (target 0.01 mm)";
     // Guard at the measured maximum: one query at dy 4.616 mm on a flange patch of about 400 N, born at 4.595 mm
     // (since the gap is sampled at the solved approach; 4.585 mm before, max 36 %).
     EXPECT_LE(out.two_patches.force.at(1.0), 0.65) << "regression guard (target 0.5 %)";
-    EXPECT_LE(out.flange_only.force.at(1.0), 0.03) << "regression guard (target 0.5 %)";
-    EXPECT_LE(out.flange_only.point.at(1.0), 0.3e-3) << "regression guard (target 0.01 mm)";
+    EXPECT_LE(out.flange_only.force.at(1.0), 5e-3);
+    EXPECT_LE(out.flange_only.area.at(1.0), 0.02) << "regression guard (target 0.5 %)";
+    EXPECT_LE(out.flange_only.point.at(1.0), 0.05e-3) << "regression guard (target 0.01 mm)";
     // In a jump cell the query takes the nearer node's patch (it may differ from the direct solve between the
     // jump and the cell's middle: a jump is misplaced by at most half a step).
     EXPECT_GT(out.jump_queries, 0u);

@@ -39,8 +39,8 @@ mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "whe
 method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (README "Method ladder")
 strip_width_m = 0.2e-3
 reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
-# reference_angle = "interpenetration-mean"  # plane inclination: the reference point's own when absent (deepest:
-                                            # "tangent"), or CONTACT's mean (README "Flange and flank")
+reference_angle = "interpenetration-mean"  # plane inclination: CONTACT's mean over the interpenetration region,
+                                          # or "tangent" (the rail's at the deepest point; README "Flange and flank")
 surface = "planar"       # contact surface: "planar" (one plane per patch) or "conformal" (curved, CONTACT D=4)
 warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; README "Speed")
 

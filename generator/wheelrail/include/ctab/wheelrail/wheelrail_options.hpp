@@ -55,16 +55,17 @@ struct WheelRailOptions {
   //! -68.6 to -69.4 deg); on a flat tread it sits up to 3 mm from the centre (0.6 deg at dy 0). Not yet the default
   //! (README "Flange and flank": what switching it moves).
   bool reference_at_interpenetration_centre = false;
-  //! Reference angle (config [solver] reference_angle, CLI --reference-angle); unset: the reference point's own
-  //! (the deepest point: Tangent; CONTACT's centre: InterpenetrationMean, the only one it takes: Tangent with it is
-  //! invalid input). InterpenetrationMean at the deepest point: the plane through the deepest point inclined at
-  //! CONTACT's reference angle, taken at each gap pass's sampling approach (no re-centring: a plane's gap does not
-  //! depend on the point it passes through, only the strip grid's origin does). On CONTACT's flange cases it meets
-  //! its force direction within 0.013 deg where the tangent misses by up to 2.8 deg (README "Flange and flank").
+  //! Reference angle (config [solver] reference_angle, CLI --reference-angle); unset: InterpenetrationMean, CONTACT's
+  //! reference angle (the default since the seventh session; Tangent with CONTACT's centre is invalid input).
+  //! InterpenetrationMean at the deepest point: the plane through the deepest point inclined at CONTACT's reference
+  //! angle, taken at each gap pass's sampling approach (no re-centring: a plane's gap does not depend on the point it
+  //! passes through, only the strip grid's origin does). On CONTACT's flange cases it meets its force direction
+  //! within 0.013 deg where the tangent (the rail's inclination at the deepest point, the earlier default) misses by
+  //! up to 2.8 deg (README "Flange and flank").
   std::optional<ReferenceAngle> reference_angle;
   //! Whether the main patch's plane takes CONTACT's reference angle (the mean over the interpenetration region).
   [[nodiscard]] bool interpenetration_mean_angle() const noexcept {
-    return reference_at_interpenetration_centre || reference_angle == ReferenceAngle::InterpenetrationMean;
+    return reference_at_interpenetration_centre || reference_angle != ReferenceAngle::Tangent;
   }
   //! Contact surface (config [solver] surface, CLI --surface): planar (the default) or conformal (CONTACT's
   //! conformal approach, D = 4; README "Flange and flank").
