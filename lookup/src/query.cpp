@@ -1,6 +1,7 @@
-// Table::prelookup and Table::query: index search (an index on the smallest dy step and at most two steps on either
-// side, fixed-step binary search on the second axis) and interpolation of every slot's record, with the blending rules
-// of README "Jumps". No allocation, no branch on the table's values, loops bounded by the table's sizes only.
+// Table::prelookup and Table::query: index search (dy: arithmetic on a uniform axis, on a refined one an index on
+// the smallest step and at most two steps either way; fixed-step binary search on the second axis) and interpolation of
+// every slot's record, with the blending rules of README "Jumps". No allocation, no branch on the table's values, loops
+// bounded by the table's sizes only.
 #include <algorithm>
 #include <cmath>
 #include <cstring>

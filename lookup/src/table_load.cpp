@@ -181,6 +181,8 @@ void Table::build_dy_index(const std::vector<double>& dy_m, const std::vector<do
   cell_width_ = width;
   inv_cell_width_.resize(width.size());
   std::transform(width.begin(), width.end(), inv_cell_width_.begin(), [](double h) { return 1.0 / h; });
+  dy_index_.clear();
+  if (uniform) return;  // arithmetic search (prelookup)
   // One entry per smallest step (validate bounds the count by kMaxDyRefinement per node): the cell holding its start.
   const double smallest = *std::min_element(width.begin(), width.end());
   const std::size_t n_dy = dy_m.size();

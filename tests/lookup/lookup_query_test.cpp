@@ -201,8 +201,8 @@ TEST(LookupQuery, RefinedAxisFindsTheCellOfABinarySearch) {
 }
 
 // Linear data stay exact across coarse and refined cells in both modes (PCHIP's weighted harmonic mean of equal
-// secants is that secant), and the jump rules hold in a refined cell: the flange appears at 6.5 mm, now inside
-// the cell (6.4, 6.5]'s neighbour: present from the nearer node on.
+// secants is that secant), and the jump rules hold in a refined cell: the flange, present from 6.5 mm on, appears
+// in the refined cell (6.4, 6.5) mm and takes the nearer node's presence there.
 TEST(LookupQuery, RefinedAxisReproducesLinearDataAndItsJumps) {
   const TableData data = refined_synthetic();
   for (const ctab_interpolation mode : {CTAB_LINEAR, CTAB_PCHIP}) {
