@@ -1,9 +1,9 @@
 // Noise-aware smoothing of point profiles (issue 8, "No lost patches"): the noise estimate of point_noise.hpp on
-// synthetic noise of known sigma, the automatic smoothing length (smoothing_spline.hpp) and its effect on the
-// contact: S1002 and UIC60 1:40 sampled every 0.1 mm along the profile, Gaussian noise in z (fixed seeds), single
-// wheel at 78.5 kN, 0.2 mm strips, dy -6 ... +8 mm. Set CTAB_NOISE_REPORT=1 to print the table of the README
-// (CTAB_NOISE_SIGMAS_UM=2,5 and CTAB_NOISE_LENGTHS_MM=3.5,8 choose the rows, CTAB_NOISE_SEEDS=10 the seeds 1..10,
-// CTAB_NOISE_DETAIL=1 prints every case).
+// synthetic noise of known sigma, the automatic choice (smoothing_spline.hpp), the adaptive smoother
+// (adaptive_smoothing.hpp) and their effect on the contact: S1002 and UIC60 1:40 sampled every 0.1 mm along the
+// profile, Gaussian noise in z (fixed seeds), single wheel at 78.5 kN, 0.2 mm strips, dy -6 ... +8 mm. Set
+// CTAB_NOISE_REPORT=1 to print the table of the README (CTAB_NOISE_SIGMAS_UM=2,5 and CTAB_NOISE_LENGTHS_MM=3.5,8 choose
+// the rows, CTAB_NOISE_SEEDS=10 the seeds 1..10, CTAB_NOISE_DETAIL=1 prints every case).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +21,7 @@
 #include "ctab/contact/error.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/io/profile_io.hpp"
+#include "ctab/profiles/adaptive_smoothing.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/profiles/point_noise.hpp"
 #include "ctab/profiles/sampled_points.hpp"
@@ -47,13 +48,16 @@ SampledPoints noisy_points(const ProfileTable& exact, double sigma_m, unsigned s
                        [&](double y) { return sigma_m > 0.0 ? noise(y) : 0.0; });
 }
 
-// The profile table of points smoothed with length L [m], or the automatic choice for L < 0.
-ProfileTable smoothed(const SampledPoints& points, double smoothing_length_m, SmoothingChoice* chosen = nullptr) {
-  SmoothingChoice choice{smoothing_length_m, smoothing_length_m, 0.0};
+// The profile table of points smoothed by the cubic spline of length L [m], or the automatic choice for L < 0
+// (`shortest_m`: the shortest local length it used).
+ProfileTable smoothed(const SampledPoints& points, double smoothing_length_m, SmoothingChoice* chosen = nullptr,
+                      double* shortest_m = nullptr) {
+  SmoothingChoice choice{smoothing_length_m, 0.0, false};
   if (smoothing_length_m < 0.0) choice = choose_smoothing(points.y_m, points.z_m);
   if (chosen) *chosen = choice;
-  return ProfileTable(SmoothingSplineCurve(points.y_m, points.z_m, smoothing_lengths(points.y_m, points.z_m, choice)),
-                      kProfileTableStep_m, "points");
+  const SmoothedPointCurve smoothed = smooth_point_profile(points.y_m, points.z_m, choice);
+  if (shortest_m) *shortest_m = smoothed.shortest_length_m;
+  return ProfileTable(*smoothed.curve, kProfileTableStep_m, "points");
 }
 
 struct Result {
@@ -91,7 +95,7 @@ std::vector<double> shifts_m() {
 struct Deviation {
   int patch_mismatches = 0, failures = 0;
   double area = 0.0, pressure = 0.0;  // worst relative |noisy/clean - 1|
-  double length_m = 0.0, jump_length_m = 0.0, sigma_m = 0.0;
+  double length_m = 0.0, shortest_length_m = 0.0, sigma_m = 0.0;
 };
 
 enum class Body { Wheel, Rail };
@@ -101,11 +105,13 @@ Deviation deviation(Body body, double sigma_m, unsigned seed, double smoothing_l
   const ProfileTable wheel = exact_wheel(), rail = exact_rail();
   const ProfileTable& noisy_source = body == Body::Wheel ? wheel : rail;
   SmoothingChoice choice;
-  const ProfileTable noisy = smoothed(noisy_points(noisy_source, sigma_m, seed), smoothing_length_m, &choice);
+  double shortest_m = 0.0;
+  const ProfileTable noisy =
+      smoothed(noisy_points(noisy_source, sigma_m, seed), smoothing_length_m, &choice, &shortest_m);
   const ProfileTable clean_other = smoothed(noisy_points(body == Body::Wheel ? rail : wheel, 0.0, 0), 1e-3);
   Deviation d;
   d.length_m = choice.length_m;
-  d.jump_length_m = choice.jump_length_m;
+  d.shortest_length_m = shortest_m;
   d.sigma_m = choice.noise_sigma_m;
   const auto dy = shifts_m();
   for (std::size_t k = 0; k < dy.size(); ++k) {
@@ -170,10 +176,11 @@ TEST(AutoSmoothing, CleanProfilesKeepTheDefaultExactly) {
   }
 }
 
-TEST(AutoSmoothing, CurvatureNoiseMatchesMonteCarlo) {
-  // Pure noise on a straight line: the smoothed curve's second derivative is the noise's curvature.
+TEST(AdaptiveSmoothing, CurvatureNoiseMatchesMonteCarlo) {
+  // Pure noise on a straight line: the smoothed curve's second derivative is the noise's curvature; Huber's
+  // threshold (10 standard deviations) leaves the penalty whole.
   constexpr double sigma = 5e-6, h = 0.1e-3;
-  for (const double length : {2e-3, 4e-3}) {
+  for (const double length : {4e-3, 8e-3}) {
     double sum2 = 0.0;
     int count = 0;
     for (const unsigned seed : {1u, 2u, 3u, 4u}) {
@@ -183,17 +190,26 @@ TEST(AutoSmoothing, CurvatureNoiseMatchesMonteCarlo) {
         y.push_back(i * h);
         z.push_back(noise(0.0));
       }
-      const SmoothingSplineCurve curve(y, z, length);
+      const AdaptivelySmoothedPoints points = smooth_adaptively(y, z, length, sigma);
+      EXPECT_GT(points.shortest_length_m, 0.9 * length);
+      const SmoothingSplineCurve curve(points.y_m, points.z_m, 0.0);
       for (double t = 0.1 * curve.t_end(); t < 0.9 * curve.t_end(); t += h) {
         sum2 += std::pow(curve.at(t).d2z, 2);
         ++count;
       }
     }
-    EXPECT_NEAR(std::sqrt(sum2 / count), curvature_noise_per_m(sigma, h, length),
-                0.1 * curvature_noise_per_m(sigma, h, length))
-        << length;
-    EXPECT_NEAR(length_for_curvature_noise_m(sigma, h, curvature_noise_per_m(sigma, h, length)), length, 1e-12);
+    const double predicted = adaptive_curvature_noise_per_m(sigma, h, length);
+    EXPECT_NEAR(std::sqrt(sum2 / count), predicted, 0.1 * predicted) << length;
+    EXPECT_NEAR(adaptive_length_for_curvature_noise_m(sigma, h, predicted), length, 1e-12);
   }
+}
+
+TEST(AdaptiveSmoothing, RejectsWhatItCannotSmooth) {
+  const std::vector<double> few(5, 0.0);
+  EXPECT_THROW((void)smooth_adaptively(few, few, 1e-3, 1e-6), std::invalid_argument);
+  const SampledPoints p = noisy_points(exact_rail(), 0.0, 0u);
+  EXPECT_THROW((void)smooth_adaptively(p.y_m, p.z_m, 0.0, 1e-6), std::invalid_argument);
+  EXPECT_THROW((void)smooth_adaptively(p.y_m, p.z_m, 1e-3, 0.0), std::invalid_argument);
 }
 
 TEST(AutoSmoothing, LengthGrowsWithTheNoise) {
@@ -201,39 +217,56 @@ TEST(AutoSmoothing, LengthGrowsWithTheNoise) {
   for (const double sigma : {2e-6, 5e-6, 10e-6}) {
     const SampledPoints p = noisy_points(exact_wheel(), sigma, 3u);
     const SmoothingChoice choice = choose_smoothing(p.y_m, p.z_m);
-    EXPECT_GT(choice.jump_length_m, previous) << sigma;
-    EXPECT_GT(choice.length_m, 2.0 * choice.jump_length_m) << sigma;
-    previous = choice.jump_length_m;
+    EXPECT_TRUE(choice.adaptive) << sigma;
+    EXPECT_GT(choice.length_m, previous) << sigma;
+    previous = choice.length_m;
     if (sigma == 5e-6) {
-      EXPECT_NEAR(choice.length_m, 8.8e-3, 0.4e-3);
-      EXPECT_NEAR(choice.jump_length_m, 3.0e-3, 0.2e-3);
+      EXPECT_NEAR(choice.length_m, 10.6e-3, 0.4e-3);
+    }
+    if (sigma == 10e-6) {
+      EXPECT_EQ(choice.length_m, kMaxAutoSmoothingLength_m);
     }
   }
+  const SampledPoints clean = noisy_points(exact_wheel(), 0.0, 0u);
+  EXPECT_FALSE(choose_smoothing(clean.y_m, clean.z_m).adaptive);
 }
 
-// The short length sits at the curvature jumps of the flange (S1002) and of the R300/R80 and R80/R13 junctions
-// (60E1), not on the tread, whose curvature changes gradually.
-TEST(AutoSmoothing, ShortLengthsOnlyNearCurvatureJumps) {
-  const SampledPoints wheel = noisy_points(exact_wheel(), 5e-6, 1u);
-  const SmoothingChoice choice = choose_smoothing(wheel.y_m, wheel.z_m);
-  const auto lengths = smoothing_lengths(wheel.y_m, wheel.z_m, choice);
-  for (std::size_t i = 0; i < wheel.y_m.size(); ++i) {
-    if (wheel.y_m[i] > -10e-3) {
-      EXPECT_EQ(lengths[i], choice.length_m) << "tread, y " << wheel.y_m[i];
-    }
-    if (wheel.y_m[i] > -40e-3 && wheel.y_m[i] < -30e-3) {  // flange root
-      EXPECT_LT(lengths[i], 0.5 * choice.length_m) << "flange root, y " << wheel.y_m[i];
-    }
+// The largest curvature error [1/m] of a smoothed rail against 60E1's over the running surface (rail y -30 ... +15
+// mm), away (1 mm) from the jumps of its curvature (the R300/R80 junctions).
+double crown_curvature_error(const ProfileTable& smoothed_rail) {
+  constexpr double away = 1e-3;
+  const ProfileTable exact = exact_rail();
+  double worst = 0.0;
+  for (double y = -30e-3; y <= 15e-3; y += 0.1e-3) {
+    const double kappa = exact.at(y).curvature();
+    if (std::abs(exact.at(y - away).curvature() - kappa) > 0.01 ||
+        std::abs(exact.at(y + away).curvature() - kappa) > 0.01)
+      continue;
+    worst = std::max(worst, std::abs(smoothed_rail.at(y).curvature() - kappa));
   }
-  const SampledPoints rail = noisy_points(exact_rail(), 5e-6, 1u);
-  const auto rail_lengths = smoothing_lengths(rail.y_m, rail.z_m, choose_smoothing(rail.y_m, rail.z_m));
-  const auto shortest = *std::min_element(rail_lengths.begin(), rail_lengths.end());
-  const auto longest = *std::max_element(rail_lengths.begin(), rail_lengths.end());
-  EXPECT_LT(shortest, 0.5 * longest);
-  // clean points: one length, the default
+  return worst;
+}
+
+// The rail's head is arcs (R300 on the crown, R80, R13). Where its curvature jumps, the adaptive penalty gives way:
+// 1 mm from the R300/R80 junctions the arcs keep their curvature within 0.9 1/m on clean points and 1.0-1.3 1/m
+// with 5 um noise, where the cubic spline of the same length spreads the jump over its length (2.7-2.9 1/m) and the
+// cubic spline of 3 mm (the earlier automatic choice's length near jumps) keeps the noise (7.0-8.3 1/m).
+TEST(AdaptiveSmoothing, KeepsTheRailsArcsNearTheirJunctions) {
   const SampledPoints clean = noisy_points(exact_rail(), 0.0, 0u);
-  for (const double l : smoothing_lengths(clean.y_m, clean.z_m, choose_smoothing(clean.y_m, clean.z_m)))
-    ASSERT_EQ(l, kDefaultSmoothingLength_m);
+  const double length = adaptive_length_for_curvature_noise_m(5e-6, kPointStep_m, kCurvatureNoise_per_m);
+  const AdaptivelySmoothedPoints adaptive = smooth_adaptively(clean.y_m, clean.z_m, length, 5e-6);
+  const double adaptive_error = crown_curvature_error(
+      ProfileTable(SmoothingSplineCurve(adaptive.y_m, adaptive.z_m, 0.0), kProfileTableStep_m, "adaptive"));
+  const double cubic_error = crown_curvature_error(smoothed(clean, length));
+  EXPECT_LT(adaptive_error, 1.0);
+  EXPECT_GT(cubic_error, 2.5 * adaptive_error);
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    const SampledPoints noisy = noisy_points(exact_rail(), 5e-6, seed);
+    const double noisy_error = crown_curvature_error(smoothed(noisy, -1.0));
+    EXPECT_LT(noisy_error, 1.5) << seed;
+    EXPECT_GT(crown_curvature_error(smoothed(noisy, length)), 2.0 * noisy_error) << seed;
+    EXPECT_GT(crown_curvature_error(smoothed(noisy, 3e-3)), 4.0 * noisy_error) << seed;
+  }
 }
 
 TEST(AutoSmoothing, ManchesterFilesAreCleanAndKeepTheDefault) {
@@ -269,9 +302,8 @@ std::vector<double> env_list(const char* name, std::vector<double> first, double
 
 void print_report() {
   const auto clean = clean_results();
-  std::printf(
-      "| body | noise | smoothing | L [mm] (near jumps) | sigma est. [um] | patch-count mismatches | failures | "
-      "worst area | worst pmax |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| body | noise | smoothing | L [mm] (shortest) | sigma est. [um] | patch-count mismatches | failures | "
+              "worst area | worst pmax |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const Body body : {Body::Wheel, Body::Rail})
     for (const double sigma : std::getenv("CTAB_NOISE_SIGMAS_UM") ? env_list("CTAB_NOISE_SIGMAS_UM", {}, 1e-6)
                                                                   : std::vector<double>{2e-6, 5e-6, 10e-6})
@@ -288,7 +320,7 @@ void print_report() {
           worst.area = std::max(worst.area, d.area);
           worst.pressure = std::max(worst.pressure, d.pressure);
           l_min = std::min(l_min, d.length_m), l_max = std::max(l_max, d.length_m);
-          j_min = std::min(j_min, d.jump_length_m), j_max = std::max(j_max, d.jump_length_m);
+          j_min = std::min(j_min, d.shortest_length_m), j_max = std::max(j_max, d.shortest_length_m);
           s_min = std::min(s_min, d.sigma_m), s_max = std::max(s_max, d.sigma_m);
           cases += static_cast<int>(shifts_m().size());
         }
@@ -306,9 +338,10 @@ void print_report() {
       }
 }
 
-// Issue 8: 5 um noise gives the clean profile's patch count, and on the wheel area and max pressure within 5 %.
-// On the rail the tread contact sits at the crown's R300/R80 junction, where the short length leaves noise in the
-// curvature: max pressure within 25 % there (README "How to choose the smoothing").
+// Issue 8: 5 um noise gives the clean profile's patch count, area within 5 % and on the wheel max pressure within
+// 5 % (3 seeds: 2.8 % and 3.1 %). On the rail the contacts that straddle the crown's R300/R80 junction (dy 0 ... +1
+// mm) read max pressure within 16 % (14.5 %: the adaptive penalty still spreads that 9.2 1/m jump over about a
+// millimetre; README "How to choose the smoothing").
 TEST(NoisyContact, FiveMicronsKeepThePatchesAreaAndPressure) {
   const auto clean = clean_results();
   for (const Body body : {Body::Wheel, Body::Rail})
@@ -317,8 +350,8 @@ TEST(NoisyContact, FiveMicronsKeepThePatchesAreaAndPressure) {
       const char* name = body == Body::Wheel ? "wheel" : "rail";
       EXPECT_EQ(d.patch_mismatches, 0) << name << " seed " << seed;
       EXPECT_EQ(d.failures, 0) << name << " seed " << seed;
-      EXPECT_LT(d.area, body == Body::Wheel ? 0.05 : 0.06) << name << " seed " << seed;
-      EXPECT_LT(d.pressure, body == Body::Wheel ? 0.05 : 0.25) << name << " seed " << seed;
+      EXPECT_LT(d.area, 0.05) << name << " seed " << seed;
+      EXPECT_LT(d.pressure, body == Body::Wheel ? 0.05 : 0.16) << name << " seed " << seed;
       // the default length alone splits the patches
       EXPECT_GT(deviation(body, 5e-6, seed, kDefaultSmoothingLength_m, clean).patch_mismatches, 5) << name;
     }
@@ -367,8 +400,9 @@ TEST(SmoothingOption, TablesRecordTheChosenLengthAndNoise) {
   const tables::Table t = generate_table(c, GeneratorInfo{});
   EXPECT_EQ(t.text_attributes.at("smoothing"), "auto");
   ASSERT_TRUE(t.number_attributes.count("wheel_smoothing_m"));
-  EXPECT_NEAR(t.number_attributes.at("wheel_smoothing_m"), 8.8e-3, 0.4e-3);
-  EXPECT_NEAR(t.number_attributes.at("wheel_smoothing_near_jumps_m"), 3.0e-3, 0.2e-3);
+  EXPECT_NEAR(t.number_attributes.at("wheel_smoothing_m"), 10.6e-3, 0.4e-3);
+  // the shortest local length: at S1002's flange-root jumps the adaptive penalty gives way
+  EXPECT_NEAR(t.number_attributes.at("wheel_smoothing_near_jumps_m"), 4.6e-3, 0.3e-3);
   EXPECT_NEAR(t.number_attributes.at("wheel_noise_sigma_m"), 5e-6, 0.6e-6);
   EXPECT_FALSE(t.number_attributes.count("rail_smoothing_m"));  // built-in UIC60: analytic, not smoothed
   const TableConfig fixed =
@@ -387,8 +421,8 @@ TEST(SmoothingOption, SolveJsonReportsTheSmoothing) {
   ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
   const auto json = nlohmann::json::parse(automatic.out);
   EXPECT_TRUE(json.at("wheel_profile_smoothing").at("automatic").get<bool>());
-  EXPECT_NEAR(json.at("wheel_profile_smoothing").at("length_m").get<double>(), 8.8e-3, 0.4e-3);
-  EXPECT_NEAR(json.at("wheel_profile_smoothing").at("length_near_jumps_m").get<double>(), 3.0e-3, 0.2e-3);
+  EXPECT_NEAR(json.at("wheel_profile_smoothing").at("length_m").get<double>(), 10.6e-3, 0.4e-3);
+  EXPECT_NEAR(json.at("wheel_profile_smoothing").at("length_near_jumps_m").get<double>(), 4.6e-3, 0.3e-3);
   EXPECT_FALSE(json.contains("rail_profile_smoothing"));
   const test::CtabRun fixed = test::run_ctab(solve + " --smoothing 0.002");
   ASSERT_EQ(fixed.exit_code, 0) << fixed.err;

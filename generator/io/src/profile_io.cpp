@@ -419,10 +419,13 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
   const ProfilePoints points = read_profile_points(spec, role, options);
   if (role == ProfileRole::Rail) check_not_inclined_twice(points, options.inclination, spec);
   SmoothingChoice choice = choose_smoothing(points.y_m, points.z_m);
-  if (!options.smoothing_auto) choice.length_m = choice.jump_length_m = options.smoothing_length_m;
-  smoothing = {true, options.smoothing_auto, choice.length_m, choice.jump_length_m, choice.noise_sigma_m};
-  curve =
-      std::make_shared<SmoothingSplineCurve>(points.y_m, points.z_m, smoothing_lengths(points.y_m, points.z_m, choice));
+  if (!options.smoothing_auto) {
+    choice.length_m = options.smoothing_length_m;
+    choice.adaptive = false;
+  }
+  const SmoothedPointCurve smoothed = smooth_point_profile(points.y_m, points.z_m, choice);
+  smoothing = {true, options.smoothing_auto, choice.length_m, smoothed.shortest_length_m, choice.noise_sigma_m};
+  curve = smoothed.curve;
   if (role == ProfileRole::Rail) {
     if (options.inclination != 0.0)
       curve = std::make_shared<TransformedCurve>(curve, -std::atan(options.inclination), 0.0, 0.0);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "ctab/profiles/adaptive_smoothing.hpp"
 #include "ctab/profiles/point_noise.hpp"
 
 namespace ctab::gen {
@@ -12,9 +13,8 @@ namespace ctab::gen {
 namespace {
 
 // Fits one coordinate; returns smoothed values f and knot second derivatives g (natural ends: g = 0).
-// lambda per point (the penalty's weight relative to point i's residual: lambda_i / w_i).
-void fit(const std::vector<double>& s, const std::vector<double>& x, const std::vector<double>& w,
-         const std::vector<double>& lambda, std::vector<double>& f, std::vector<double>& g) {
+void fit(const std::vector<double>& s, const std::vector<double>& x, const std::vector<double>& w, double lambda,
+         std::vector<double>& f, std::vector<double>& g) {
   const std::size_t n = s.size();
   const auto m = static_cast<Eigen::Index>(n - 2);
   std::vector<double> h(n - 1);
@@ -36,7 +36,7 @@ void fit(const std::vector<double>& s, const std::vector<double>& x, const std::
       if (k == j + 1) value += h[uj + 1] / 6.0;
       if (k + 1 == j) value += h[uk + 1] / 6.0;
       for (std::size_t row = std::max(uj, uk); row <= std::min(uj, uk) + 2; ++row)
-        if (lambda[row] > 0.0) value += lambda[row] * q(row, uj) * q(row, uk) / w[row];
+        if (lambda > 0.0) value += lambda * q(row, uj) * q(row, uk) / w[row];
       if (value != 0.0) entries.emplace_back(j, k, value);
     }
   }
@@ -52,12 +52,11 @@ void fit(const std::vector<double>& s, const std::vector<double>& x, const std::
   g.assign(n, 0.0);
   for (Eigen::Index j = 0; j < m; ++j) g[static_cast<std::size_t>(j) + 1] = gamma(j);
   f = x;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!(lambda[i] > 0.0)) continue;
+  for (std::size_t i = 0; i < n && lambda > 0.0; ++i) {
     double qg = 0.0;
     for (std::size_t column = (i >= 2 ? i - 2 : 0); column <= std::min(i, n - 3); ++column)
       qg += q(i, column) * gamma(static_cast<Eigen::Index>(column));
-    f[i] = x[i] - lambda[i] * qg / w[i];
+    f[i] = x[i] - lambda * qg / w[i];
   }
 }
 
@@ -78,70 +77,31 @@ double lambda_of(double smoothing_length_m) {
 }  // namespace
 
 SmoothingSplineCurve::SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z,
-                                           double smoothing_length_m)
-    : SmoothingSplineCurve(y, z, std::vector<double>(y.size(), smoothing_length_m)) {}
-
-SmoothingSplineCurve::SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z,
-                                           const std::vector<double>& smoothing_lengths_m) {
-  std::vector<double> w, lambda(y.size());
+                                           double smoothing_length_m) {
+  std::vector<double> w;
   arc_length(y, z, s_, w);
-  for (std::size_t i = 0; i < y.size(); ++i) lambda[i] = lambda_of(smoothing_lengths_m[i]);
-  fit(s_, y, w, lambda, fy_, gy_);
-  fit(s_, z, w, lambda, fz_, gz_);
-}
-
-std::vector<double> smoothing_lengths(const std::vector<double>& y, const std::vector<double>& z,
-                                      const SmoothingChoice& choice) {
-  const std::size_t n = y.size();
-  std::vector<double> length(n, choice.length_m);
-  if (!(choice.jump_length_m < choice.length_m)) return length;
-  // Curvature of the pilot fit (the long length) at the points.
-  const SmoothingSplineCurve pilot(y, z, choice.length_m);
-  std::vector<double> s, w, kappa(n);
-  arc_length(y, z, s, w);
-  for (std::size_t i = 0; i < n; ++i) {
-    const CurvePoint p = pilot.at(s[i]);
-    kappa[i] = (p.dy * p.d2z - p.dz * p.d2y) / std::pow(p.dy * p.dy + p.dz * p.dz, 1.5);
-  }
-  // Near a jump or kink of the curvature (its second difference over +-reach above the threshold; a curvature
-  // that changes linearly, as along a worn tread, passes) the short length; away from it L grows by at most 1 m/m.
-  const double reach = kJumpReach * choice.length_m;
-  for (std::size_t i = 0, ahead = 0, behind = 0; i < n; ++i) {
-    while (ahead + 1 < n && s[ahead] < s[i] + reach) ++ahead;
-    while (s[behind] < s[i] - reach) ++behind;
-    if (std::abs(kappa[ahead] - 2.0 * kappa[i] + kappa[behind]) > kCurvatureJump_per_m)
-      length[i] = choice.jump_length_m;
-  }
-  for (std::size_t i = 1; i < n; ++i) length[i] = std::min(length[i], length[i - 1] + (s[i] - s[i - 1]));
-  for (std::size_t i = n - 1; i-- > 0;) length[i] = std::min(length[i], length[i + 1] + (s[i + 1] - s[i]));
-  return length;
-}
-
-double curvature_noise_per_m(double noise_sigma_m, double point_spacing_m, double smoothing_length_m) {
-  // Var f'' = sigma^2 h / (2 pi) int w^4 / (1 + lambda w^4)^2 dw = sigma^2 h lambda^(-5/4) sqrt(2) / 16
-  constexpr double kFactor = 0.29730177875068026;  // sqrt(sqrt(2) / 16)
-  return kFactor * noise_sigma_m * std::sqrt(point_spacing_m) * std::pow(lambda_of(smoothing_length_m), -0.625);
-}
-
-double length_for_curvature_noise_m(double noise_sigma_m, double point_spacing_m, double curvature_noise_per_m) {
-  constexpr double kFactor = 0.29730177875068026;
-  return 2.0 * std::numbers::pi *
-         std::pow(kFactor * noise_sigma_m * std::sqrt(point_spacing_m) / curvature_noise_per_m, 0.4);
+  fit(s_, y, w, lambda_of(smoothing_length_m), fy_, gy_);
+  fit(s_, z, w, lambda_of(smoothing_length_m), fz_, gz_);
 }
 
 SmoothingChoice choose_smoothing(const std::vector<double>& y, const std::vector<double>& z) {
-  SmoothingChoice choice{kDefaultSmoothingLength_m, kDefaultSmoothingLength_m, estimate_point_noise_m(y, z)};
+  SmoothingChoice choice{kDefaultSmoothingLength_m, estimate_point_noise_m(y, z), false};
   if (!(choice.noise_sigma_m > kNoiseThreshold_m)) return choice;
   double length = 0.0;
   for (std::size_t i = 1; i < y.size(); ++i) length += std::hypot(y[i] - y[i - 1], z[i] - z[i - 1]);
   const double spacing = length / static_cast<double>(y.size() - 1);
-  auto length_for = [&](double curvature_noise) {
-    return std::clamp(length_for_curvature_noise_m(choice.noise_sigma_m, spacing, curvature_noise),
-                      kDefaultSmoothingLength_m, kMaxAutoSmoothingLength_m);
-  };
-  choice.length_m = length_for(kCurvatureNoise_per_m);
-  choice.jump_length_m = length_for(kJumpCurvatureNoise_per_m);
+  choice.length_m =
+      std::clamp(adaptive_length_for_curvature_noise_m(choice.noise_sigma_m, spacing, kCurvatureNoise_per_m),
+                 kDefaultSmoothingLength_m, kMaxAutoSmoothingLength_m);
+  choice.adaptive = true;
   return choice;
+}
+
+SmoothedPointCurve smooth_point_profile(const std::vector<double>& y, const std::vector<double>& z,
+                                        const SmoothingChoice& choice) {
+  if (!choice.adaptive) return {std::make_shared<SmoothingSplineCurve>(y, z, choice.length_m), choice.length_m};
+  const AdaptivelySmoothedPoints smoothed = smooth_adaptively(y, z, choice.length_m, choice.noise_sigma_m);
+  return {std::make_shared<SmoothingSplineCurve>(smoothed.y_m, smoothed.z_m, 0.0), smoothed.shortest_length_m};
 }
 
 CurvePoint SmoothingSplineCurve::at(double t) const {

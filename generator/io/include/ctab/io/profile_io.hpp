@@ -13,8 +13,9 @@
 //!   unless `length_unit_m` says otherwise.
 //! Options may mirror y or z on top of the file's own settings; z (and a wheel's y) are auto-detected when
 //! not given: a rail's ends lie below its top, a wheel's flange tip (largest z) at y < 0.
-//! Point data are smoothed by the arc-length smoothing spline (smoothing_spline.hpp), by default with the
-//! noise-aware length (choose_smoothing: 1 mm on clean data, longer as the points' noise grows), or a given one. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
+//! Point data are smoothed in arc length (smoothing_spline.hpp), by default noise-aware (choose_smoothing: the
+//! cubic spline of 1 mm on clean data, the adaptive smoother of adaptive_smoothing.hpp with a length that grows
+//! with the points' noise on noisy data), or by the cubic spline of a given length. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
 //! the highest point of the head. A rail file whose head is already canted (rail_cant.hpp) by more than half the
 //! inclination to be applied (at most 1/80) is an error: it would be inclined twice.
 //! Errors (InputError) name the file, the line and what was expected: missing header block, non-numeric point,
@@ -62,7 +63,8 @@ struct ProfileSmoothing {
   bool point_data = false;     //!< the profile came from a file's points
   bool automatic = false;      //!< the length was chosen from the noise
   double length_m = 0.0;       //!< smoothing length L used [m] (on the running surfaces when automatic)
-  double jump_length_m = 0.0;  //!< L used near jumps of the curvature [m] (smoothing_lengths)
+  double jump_length_m = 0.0;  //!< the shortest local length [m]: where the curvature jumps or changes fast the
+                               //!< adaptive smoother's penalty gives way (smooth_point_profile); L otherwise
   double noise_sigma_m = 0.0;  //!< estimated noise normal to the profile [m]
 };
 

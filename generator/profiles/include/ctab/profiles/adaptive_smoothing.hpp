@@ -1,0 +1,47 @@
+#pragma once
+//! Noise-aware smoothing of a point profile whose curvature may change fast or jump (`--smoothing auto` on noisy
+//! points). Penalised least squares in summed-chord arc length s, each coordinate x in {y, z}:
+//!   minimise sum_i w_i (x_i - f_i)^2 + lambda sum_j rho_j c_j (f'''_j)^2,   lambda = (L / 2 pi)^6,
+//! f'''_j the third derivative of window j (3! times the divided difference over points j..j+3), c_j its length /3,
+//! w_i the trapezoid weights: a discrete smoothing spline of order 3, the low-pass filter 1 / (1 + lambda omega^6)
+//! (Whittaker 1923; Eilers 2003). Penalising the third derivative leaves a curvature that changes linearly
+//! untouched (the cubic spline's second-derivative penalty flattens it over L). The weights rho_j follow the
+//! derivative of the curvature, dkappa/ds = N . f''' (N the unit normal), by iteratively reweighted least squares
+//! with Huber's weight rho = min(1, tau / |dkappa/ds|) (Huber 1964): where the profile's own curvature changes
+//! faster than noise can make it (tau a multiple of the noise's dkappa/ds), the penalty gives way in proportion,
+//! so jumps and fast changes keep their shape while the running surfaces keep the full length L.
+#include <vector>
+
+namespace ctab::gen {
+
+//! Points smoothed by smooth_adaptively.
+struct AdaptivelySmoothedPoints {
+  std::vector<double> y_m, z_m;    //!< the smoothed points, one per input point [m]
+  double shortest_length_m = 0.0;  //!< the shortest local smoothing length L rho^(1/6) over the profile [m]
+};
+
+//! Huber's threshold tau in standard deviations of the smoothed noise's dkappa/ds (calibrated with 5 um noise on
+//! S1002 and 60E1, tests/generator/profile_noise_test.cpp: 7 to 14 give the same figures within 1 %).
+inline constexpr double kAdaptiveHuberThreshold = 10.0;
+//! Iterations of the reweighting (the weights settle within 10-15; more change the result by < 0.1 %).
+inline constexpr int kAdaptiveIterations = 30;
+
+//! Smooths points (y, z) [m], ordered with increasing y, of measured noise sigma [m] normal to the profile, with
+//! length L [m]. sigma and L > 0, at least 8 points.
+[[nodiscard]] AdaptivelySmoothedPoints smooth_adaptively(const std::vector<double>& y, const std::vector<double>& z,
+                                                         double length_m, double noise_sigma_m);
+
+//! Standard deviation [1/m] of the second derivative (the curvature) that the order-3 smoother of length L [m]
+//! leaves of white noise sigma [m] on points spaced h [m]:
+//! Var f'' = sigma^2 h / (2 pi) int omega^4 / (1 + lambda omega^6)^2 d omega = sigma^2 h lambda^(-5/6) / 18.
+[[nodiscard]] double adaptive_curvature_noise_per_m(double noise_sigma_m, double point_spacing_m,
+                                                    double smoothing_length_m);
+//! The inverse: the length [m] that leaves curvature noise `curvature_noise_per_m` [1/m].
+[[nodiscard]] double adaptive_length_for_curvature_noise_m(double noise_sigma_m, double point_spacing_m,
+                                                           double curvature_noise_per_m);
+//! Standard deviation [1/m^2] of the third derivative (dkappa/ds) of the smoothed noise:
+//! Var f''' = sigma^2 h / (2 pi) int omega^6 / (1 + lambda omega^6)^2 d omega = sigma^2 h lambda^(-7/6) / 18.
+[[nodiscard]] double adaptive_curvature_slope_noise_per_m2(double noise_sigma_m, double point_spacing_m,
+                                                           double smoothing_length_m);
+
+}  // namespace ctab::gen
