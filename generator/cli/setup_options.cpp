@@ -105,8 +105,9 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
                    throw CLI::ValidationError("--smoothing", "expected " + length.expectation + ", got " + text);
                  c.smoothing_length_m = value;
                },
-               "smoothing of point profiles: auto (from the points' noise, 1 mm when clean; README \"Curvature\") or "
-               "a length [m] (0 interpolates)")
+               "smoothing of point profiles: auto (from the points' noise: the cubic spline of 1 mm when clean, "
+               "the adaptive smoother on noise; README \"Curvature\") or the cubic spline of a length [m] "
+               "(0 interpolates)")
             ->default_str(c.smoothing_auto ? gen::kSmoothingAuto : number_text(c.smoothing_length_m)));
   }
   if (groups & kTrack) {
