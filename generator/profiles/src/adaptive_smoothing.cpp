@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "ctab/profiles/arc_length.hpp"
+
 namespace ctab::gen {
 
 namespace {
@@ -46,9 +48,8 @@ AdaptivelySmoothedPoints smooth_adaptively(const std::vector<double>& y, const s
   const std::size_t n = y.size();
   if (n < 8 || z.size() != n || !(length_m > 0.0) || !(noise_sigma_m > 0.0))
     throw std::invalid_argument("smooth_adaptively: needs 8 points, a length and a noise above 0");
-  std::vector<double> s(n, 0.0), w(n);
-  for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(y[i] - y[i - 1], z[i] - z[i - 1]);
-  for (std::size_t i = 0; i < n; ++i) w[i] = 0.5 * (s[std::min(i + 1, n - 1)] - s[i == 0 ? 0 : i - 1]);
+  std::vector<double> s, w;
+  summed_chord_arc_length(y, z, s, w);
   const std::vector<Window> windows = windows_of(s);
   const double lambda = lambda_of(length_m);
   const double tau =

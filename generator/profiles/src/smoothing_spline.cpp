@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "ctab/profiles/adaptive_smoothing.hpp"
+#include "ctab/profiles/arc_length.hpp"
 #include "ctab/profiles/point_noise.hpp"
 
 namespace ctab::gen {
@@ -60,16 +61,6 @@ void fit(const std::vector<double>& s, const std::vector<double>& x, const std::
   }
 }
 
-// Summed-chord arc length s and trapezoid weights w of the points.
-void arc_length(const std::vector<double>& y, const std::vector<double>& z, std::vector<double>& s,
-                std::vector<double>& w) {
-  const std::size_t n = y.size();
-  s.assign(n, 0.0);
-  for (std::size_t i = 1; i < n; ++i) s[i] = s[i - 1] + std::hypot(y[i] - y[i - 1], z[i] - z[i - 1]);
-  w.resize(n);
-  for (std::size_t i = 0; i < n; ++i) w[i] = 0.5 * (s[std::min(i + 1, n - 1)] - s[i == 0 ? 0 : i - 1]);
-}
-
 double lambda_of(double smoothing_length_m) {
   return smoothing_length_m > 0.0 ? std::pow(smoothing_length_m / (2.0 * std::numbers::pi), 4) : 0.0;
 }
@@ -79,7 +70,7 @@ double lambda_of(double smoothing_length_m) {
 SmoothingSplineCurve::SmoothingSplineCurve(const std::vector<double>& y, const std::vector<double>& z,
                                            double smoothing_length_m) {
   std::vector<double> w;
-  arc_length(y, z, s_, w);
+  summed_chord_arc_length(y, z, s_, w);
   fit(s_, y, w, lambda_of(smoothing_length_m), fy_, gy_);
   fit(s_, z, w, lambda_of(smoothing_length_m), fz_, gz_);
 }
