@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "ctab/profiles/adaptive_smoothing.hpp"
 #include "ctab/profiles/profile.hpp"
 
 namespace ctab::gen {
@@ -40,6 +41,7 @@ struct SmoothingChoice {
   double length_m = kDefaultSmoothingLength_m;  //!< L [m]
   double noise_sigma_m = 0.0;                   //!< estimated noise normal to the profile [m] (point_noise.hpp)
   bool adaptive = false;  //!< smooth_adaptively (adaptive_smoothing.hpp) instead of the cubic spline of length L
+  CurvaturePrior prior = CurvaturePrior::Smooth;  //!< the adaptive smoother's prior
 };
 //! `--smoothing auto`: the noise sigma estimated from the points (point_noise.hpp); the cubic spline of the default
 //! 1 mm while sigma is below kNoiseThreshold_m (clean data smooth exactly as with L = 1 mm); otherwise the adaptive
