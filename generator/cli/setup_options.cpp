@@ -93,22 +93,36 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
     add(app.add_option("--inclination", c.inclination_text,
                        "rail inclination: 1/40, 1/30, 1/20 or 0 (already inclined)")
             ->capture_default_str());
-    const NumberRule length{"\"auto\" or a smoothing length in [0, 0.05] m",
-                            [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 0.05; }};
-    add(app.add_option_function<std::string>(
-               "--smoothing",
-               [&c, length](const std::string& text) {
-                 double value = 0.0;
-                 c.smoothing_auto = text == gen::kSmoothingAuto;
-                 if (c.smoothing_auto) return;
-                 if (!parse_number(text, value) || !length.accept(value))
-                   throw CLI::ValidationError("--smoothing", "expected " + length.expectation + ", got " + text);
-                 c.smoothing_length_m = value;
-               },
-               "smoothing of point profiles: auto (from the points' noise: the cubic spline of 1 mm when clean, "
-               "the adaptive smoother on noise; README \"Curvature\") or the cubic spline of a length [m] "
-               "(0 interpolates)")
-            ->default_str(c.smoothing_auto ? gen::kSmoothingAuto : number_text(c.smoothing_length_m)));
+    // --smoothing sets both; --wheel-smoothing and --rail-smoothing, defined after it, run after it and override.
+    auto smoothing_option = [&](const std::string& name, std::vector<gen::SmoothingSetting*> into,
+                                const std::string& help) {
+      const NumberRule length{"\"auto\", \"auto-arcs\" or a smoothing length in [0, 0.05] m",
+                              [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 0.05; }};
+      add(app.add_option_function<std::string>(
+                 name,
+                 [into, length, name](const std::string& text) {
+                   gen::SmoothingSetting setting;
+                   if (const auto automatic = gen::automatic_smoothing(text)) {
+                     setting = *automatic;
+                   } else {
+                     double value = 0.0;
+                     if (!parse_number(text, value) || !length.accept(value))
+                       throw CLI::ValidationError(name, "expected " + length.expectation + ", got " + text);
+                     setting.automatic = false;
+                     setting.length_m = value;
+                   }
+                   for (gen::SmoothingSetting* s : into) *s = setting;
+                 },
+                 help)
+              ->default_str(gen::smoothing_text(*into.front())));
+    };
+    smoothing_option("--smoothing", {&c.wheel_smoothing, &c.rail_smoothing},
+                     "smoothing of point profiles: auto (from the points' noise: the cubic spline of 1 mm when clean, "
+                     "the adaptive smoother on noise; README \"Curvature\"), auto-arcs (the same for profiles drawn "
+                     "as circular arcs and straight lines, such as new rails: keeps their curvature jumps; README "
+                     "\"How to choose the smoothing\") or the cubic spline of a length [m] (0 interpolates)");
+    smoothing_option("--wheel-smoothing", {&c.wheel_smoothing}, "the wheel's alone (as --smoothing)");
+    smoothing_option("--rail-smoothing", {&c.rail_smoothing}, "the rail's alone (as --smoothing)");
   }
   if (groups & kTrack) {
     add(app.add_option("--gauge", c.track.gauge_m, "track gauge [m]")

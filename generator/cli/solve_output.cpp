@@ -86,11 +86,14 @@ nlohmann::json to_json(const gen::TableConfig& config, const gen::CaseSolution& 
 
 void add_smoothing(nlohmann::json& json, const gen::SweepSetup& setup) {
   for (const auto& [body, smoothing] : {std::pair{"wheel", &setup.wheel_smoothing}, {"rail", &setup.rail_smoothing}})
-    if (smoothing->point_data)
-      json[std::string(body) + "_profile_smoothing"] = {{"automatic", smoothing->automatic},
-                                                        {"length_m", smoothing->length_m},
-                                                        {"length_near_jumps_m", smoothing->jump_length_m},
-                                                        {"noise_sigma_m", smoothing->noise_sigma_m}};
+    if (smoothing->point_data) {
+      nlohmann::json& out = json[std::string(body) + "_profile_smoothing"];
+      out = {{"automatic", smoothing->automatic},
+             {"length_m", smoothing->length_m},
+             {"length_near_jumps_m", smoothing->jump_length_m},
+             {"noise_sigma_m", smoothing->noise_sigma_m}};
+      if (smoothing->arc_junctions >= 0) out["arc_junctions"] = smoothing->arc_junctions;
+    }
 }
 
 bool report_failures(const gen::TableConfig& config, const gen::SweepSetup& setup, const gen::CaseSolution& solution) {

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 #include "ctab/contact/error.hpp"
 #include "ctab/io/text_input.hpp"
@@ -400,6 +402,19 @@ double parse_inclination(const std::string& text, const std::string& source, std
   return value;
 }
 
+std::string smoothing_text(const SmoothingSetting& setting) {
+  if (setting.automatic) return setting.prior == CurvaturePrior::Arcs ? kSmoothingAutoArcs : kSmoothingAuto;
+  std::ostringstream text;
+  text << setting.length_m << " m";
+  return text.str();
+}
+
+std::optional<SmoothingSetting> automatic_smoothing(const std::string& text) {
+  if (text == kSmoothingAuto) return SmoothingSetting{true, CurvaturePrior::Smooth, kDefaultSmoothingLength_m};
+  if (text == kSmoothingAutoArcs) return SmoothingSetting{true, CurvaturePrior::Arcs, kDefaultSmoothingLength_m};
+  return std::nullopt;
+}
+
 ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options) {
   ProfileSmoothing smoothing;
   return load_profile(spec, role, options, smoothing);
@@ -419,12 +434,18 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
   const ProfilePoints points = read_profile_points(spec, role, options);
   if (role == ProfileRole::Rail) check_not_inclined_twice(points, options.inclination, spec);
   SmoothingChoice choice = choose_smoothing(points.y_m, points.z_m);
-  if (!options.smoothing_auto) {
-    choice.length_m = options.smoothing_length_m;
+  if (!options.smoothing.automatic) {
+    choice.length_m = options.smoothing.length_m;
     choice.adaptive = false;
   }
+  choice.prior = options.smoothing.prior;
   const SmoothedPointCurve smoothed = smooth_point_profile(points.y_m, points.z_m, choice);
-  smoothing = {true, options.smoothing_auto, choice.length_m, smoothed.shortest_length_m, choice.noise_sigma_m};
+  smoothing = {true,
+               options.smoothing.automatic,
+               choice.length_m,
+               smoothed.shortest_length_m,
+               choice.noise_sigma_m,
+               choice.adaptive && choice.prior == CurvaturePrior::Arcs ? smoothed.arc_junctions : -1};
   curve = smoothed.curve;
   if (role == ProfileRole::Rail) {
     if (options.inclination != 0.0)

@@ -163,7 +163,10 @@ AdaptivelySmoothedPoints smooth_adaptively(const std::vector<double>& y, const s
   if (prior == CurvaturePrior::Arcs) {
     freed = arc_junction_windows(y, z, s, fit, noise_sigma_m, windows.size());
     fit = reweighted_fit(y, z, w, windows, lambda, tau, freed);
-    out.junctions = static_cast<int>(std::count(freed.begin(), freed.end(), true));
+    for (std::size_t j = 0; j < windows.size(); ++j)
+      if (freed[j])
+        out.junction_y_m.push_back(
+            0.5 * (fit.fy(static_cast<Eigen::Index>(j + 1)) + fit.fy(static_cast<Eigen::Index>(j + 2))));
   }
   out.y_m.assign(fit.fy.data(), fit.fy.data() + fit.fy.size());
   out.z_m.assign(fit.fz.data(), fit.fz.data() + fit.fz.size());

@@ -200,22 +200,33 @@ class Reader {
   std::string source_;
 };
 
+// [profiles] `key`: "auto", "auto-arcs" or a length, into every setting of `into`.
+void read_smoothing(const Reader& r, const char* key, std::initializer_list<SmoothingSetting*> into) {
+  const toml::node* node = r.find("profiles", key);
+  if (!node) return;
+  const std::string name = std::string("profiles.") + key;
+  const char* expected = "\"auto\", \"auto-arcs\" or a smoothing length in [0, 0.1] m";
+  SmoothingSetting setting;
+  if (node->is_string()) {
+    const std::optional<SmoothingSetting> automatic = automatic_smoothing(node->value<std::string>().value_or(""));
+    if (!automatic) r.fail(*node, name, std::string("expected ") + expected);
+    setting = *automatic;
+  } else {
+    setting.automatic = false;
+    setting.length_m = r.number_in("profiles", key, setting.length_m, 0.0, kMaxSmoothingLength_m, expected);
+  }
+  for (SmoothingSetting* s : into) *s = setting;
+}
+
 void read_profiles(const Reader& r, TableConfig& c) {
   c.wheel = r.text("profiles", "wheel", c.wheel);
   c.rail = r.text("profiles", "rail", c.rail);
   c.inclination_text = r.text("profiles", "inclination", c.inclination_text);
   c.inclination =
       parse_inclination(c.inclination_text, c.source, c.key_line("profiles.inclination"), "'profiles.inclination'");
-  const toml::node* smoothing = r.find("profiles", "smoothing_m");
-  if (smoothing && smoothing->is_string()) {
-    if (smoothing->value<std::string>() != std::string(kSmoothingAuto))
-      r.fail(*smoothing, "profiles.smoothing_m", "expected \"auto\" or a smoothing length in [0, 0.1] m");
-    c.smoothing_auto = true;
-  } else if (smoothing) {
-    c.smoothing_auto = false;
-    c.smoothing_length_m = r.number_in("profiles", "smoothing_m", c.smoothing_length_m, 0.0, kMaxSmoothingLength_m,
-                                       "\"auto\" or a smoothing length in [0, 0.1] m");
-  }
+  read_smoothing(r, "smoothing_m", {&c.wheel_smoothing, &c.rail_smoothing});
+  read_smoothing(r, "wheel_smoothing_m", {&c.wheel_smoothing});
+  read_smoothing(r, "rail_smoothing_m", {&c.rail_smoothing});
 }
 
 // Plausibility ranges: wide enough for every gauge and wheel in service, narrow enough to catch mm for m.
@@ -426,7 +437,7 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
   }
   const Reader r(root, source);
   r.check_keys(
-      {{"profiles", {"wheel", "rail", "inclination", "smoothing_m"}},
+      {{"profiles", {"wheel", "rail", "inclination", "smoothing_m", "wheel_smoothing_m", "rail_smoothing_m"}},
        {"track", {"gauge_m", "gauge_height_m", "flange_back_distance_m", "flange_back_position_m", "nominal_radius_m"}},
        {"material", {"youngs_modulus_Pa", "poisson_ratio"}},
        {"solver",

@@ -73,8 +73,7 @@ namespace {
 ProfileTable load_checked(const TableConfig& config, const std::string& spec, ProfileRole role, const char* key,
                           ProfileSmoothing& smoothing) {
   ProfileReadOptions read;
-  read.smoothing_auto = config.smoothing_auto;
-  read.smoothing_length_m = config.smoothing_length_m;
+  read.smoothing = role == ProfileRole::Wheel ? config.wheel_smoothing : config.rail_smoothing;
   read.inclination = config.inclination;
   try {
     return load_profile(spec, role, read, smoothing);
@@ -612,19 +611,14 @@ std::string utc_now() {
   return text;
 }
 
-// "<body>_smoothing_m", "<body>_smoothing_near_jumps_m" and "<body>_noise_sigma_m" of a point profile (nothing for a
-// built-in one).
+// "<body>_smoothing_m", "<body>_smoothing_near_jumps_m", "<body>_noise_sigma_m" and with the arcs prior
+// "<body>_arc_junctions" of a point profile (nothing for a built-in one).
 void add_smoothing_provenance(tables::Table& table, const std::string& body, const ProfileSmoothing& smoothing) {
   if (!smoothing.point_data) return;
   table.number_attributes[body + "_smoothing_m"] = smoothing.length_m;
   table.number_attributes[body + "_smoothing_near_jumps_m"] = smoothing.jump_length_m;
   table.number_attributes[body + "_noise_sigma_m"] = smoothing.noise_sigma_m;
-}
-
-std::string number_text(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
+  if (smoothing.arc_junctions >= 0) table.number_attributes[body + "_arc_junctions"] = smoothing.arc_junctions;
 }
 
 void add_provenance(tables::Table& table, const TableConfig& config, const SweepSetup& setup, const SweepPlan& plan,
@@ -645,7 +639,10 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["rail_profile_sha256"] =
       sha256_hex(setup.rail->z_samples().data(), setup.rail->z_samples().size() * sizeof(double));
   text["rail_inclination"] = config.inclination_text;
-  text["smoothing"] = config.smoothing_auto ? kSmoothingAuto : number_text(config.smoothing_length_m) + " m";
+  text["smoothing"] =
+      config.wheel_smoothing == config.rail_smoothing
+          ? smoothing_text(config.wheel_smoothing)
+          : "wheel " + smoothing_text(config.wheel_smoothing) + ", rail " + smoothing_text(config.rail_smoothing);
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
   text["method"] = config.least_model ? "auto" : method_name(config.method);  // per case: /wheels/method
   text["surface"] = std::string(surface_name(config.surface));

@@ -15,7 +15,8 @@
 //! not given: a rail's ends lie below its top, a wheel's flange tip (largest z) at y < 0.
 //! Point data are smoothed in arc length (smoothing_spline.hpp), by default noise-aware (choose_smoothing: the
 //! cubic spline of 1 mm on clean data, the adaptive smoother of adaptive_smoothing.hpp with a length that grows
-//! with the points' noise on noisy data), or by the cubic spline of a given length. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
+//! with the points' noise on noisy data; with the arcs prior for profiles drawn as circular arcs and straight lines),
+//! or by the cubic spline of a given length. Rails are inclined by `inclination` (0 for a file already inclined) and re-origined at
 //! the highest point of the head. A rail file whose head is already canted (rail_cant.hpp) by more than half the
 //! inclination to be applied (at most 1/80) is an error: it would be inclined twice.
 //! Errors (InputError) name the file, the line and what was expected: missing header block, non-numeric point,
@@ -28,19 +29,36 @@
 #include <string>
 #include <vector>
 
+#include "ctab/profiles/adaptive_smoothing.hpp"
 #include "ctab/profiles/profile.hpp"
 
 namespace ctab::gen {
 
 enum class ProfileRole { Wheel, Rail };
 
+//! How to smooth a point profile: `auto` (the length from the points' noise, smooth prior), `auto-arcs` (the same with
+//! the arcs prior, adaptive_smoothing.hpp) or the cubic spline of a fixed length.
+struct SmoothingSetting {
+  bool automatic = true;                          //!< choose L from the points' noise (choose_smoothing)
+  CurvaturePrior prior = CurvaturePrior::Smooth;  //!< the adaptive smoother's prior on noisy points when automatic
+  double length_m = 1e-3;  //!< L of the cubic smoothing spline [m] when not automatic; 0 interpolates
+  bool operator==(const SmoothingSetting&) const = default;
+};
+
+//! The words of a SmoothingSetting.
+inline constexpr const char* kSmoothingAuto = "auto";
+inline constexpr const char* kSmoothingAutoArcs = "auto-arcs";
+//! "auto", "auto-arcs" or the length as "0.001 m" (provenance).
+[[nodiscard]] std::string smoothing_text(const SmoothingSetting& setting);
+//! The setting of "auto" or "auto-arcs"; empty for any other text (a length is parsed by the caller).
+[[nodiscard]] std::optional<SmoothingSetting> automatic_smoothing(const std::string& text);
+
 struct ProfileReadOptions {
-  std::optional<bool> mirror_y;      //!< mirror y (on top of the file's setting); default per format/auto
-  std::optional<bool> mirror_z;      //!< mirror z; default auto-detect
-  double length_unit_m = 1e-3;       //!< unit of plain-text and MiniProf coordinates [m]
-  bool smoothing_auto = true;        //!< choose L from the points' noise (choose_smoothing); false: as below
-  double smoothing_length_m = 1e-3;  //!< L of the smoothing spline [m] when not automatic; 0 interpolates
-  double inclination = 1.0 / 40.0;   //!< rail inclination tan(angle) towards the track centre; 0: as given
+  std::optional<bool> mirror_y;     //!< mirror y (on top of the file's setting); default per format/auto
+  std::optional<bool> mirror_z;     //!< mirror z; default auto-detect
+  double length_unit_m = 1e-3;      //!< unit of plain-text and MiniProf coordinates [m]
+  SmoothingSetting smoothing;       //!< of point data
+  double inclination = 1.0 / 40.0;  //!< rail inclination tan(angle) towards the track centre; 0: as given
 };
 
 //! Points of a profile file in canonical orientation, increasing y, SI.
@@ -66,6 +84,7 @@ struct ProfileSmoothing {
   double jump_length_m = 0.0;  //!< the shortest local length [m]: where the curvature jumps or changes fast the
                                //!< adaptive smoother's penalty gives way (smooth_point_profile); L otherwise
   double noise_sigma_m = 0.0;  //!< estimated noise normal to the profile [m]
+  int arc_junctions = -1;      //!< junctions the arcs prior placed (auto-arcs on noisy points); -1 otherwise
 };
 
 //! A profile table from a built-in name (wheel: "S1002"; rail: "UIC60" or "60E1") or a file path.

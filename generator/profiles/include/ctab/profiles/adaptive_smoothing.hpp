@@ -33,9 +33,9 @@ enum class CurvaturePrior {
 
 //! Points smoothed by smooth_adaptively.
 struct AdaptivelySmoothedPoints {
-  std::vector<double> y_m, z_m;    //!< the smoothed points, one per input point [m]
-  double shortest_length_m = 0.0;  //!< the shortest local smoothing length L rho^(1/6) away from junctions [m]
-  int junctions = 0;               //!< curvature jumps the arcs prior placed (0 for the smooth prior)
+  std::vector<double> y_m, z_m;      //!< the smoothed points, one per input point [m]
+  double shortest_length_m = 0.0;    //!< the shortest local smoothing length L rho^(1/6) away from junctions [m]
+  std::vector<double> junction_y_m;  //!< where the arcs prior let the curvature jump [m] (none for the smooth prior)
 };
 
 //! Huber's threshold tau in standard deviations of the smoothed noise's dkappa/ds (calibrated with 5 um noise on

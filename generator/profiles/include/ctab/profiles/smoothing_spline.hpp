@@ -55,6 +55,7 @@ struct SmoothingChoice {
 struct SmoothedPointCurve {
   std::shared_ptr<const ProfileCurve> curve;
   double shortest_length_m = 0.0;
+  int arc_junctions = 0;  //!< junctions the arcs prior placed (0 otherwise)
 };
 //! The cubic smoothing spline of length choice.length_m, or for an adaptive choice the interpolating cubic spline
 //! through the adaptively smoothed points.

@@ -12,6 +12,7 @@
 
 #include "ctab/wheelrail/contact_geometry_sweep.hpp"
 #include "ctab/contact/material.hpp"
+#include "ctab/io/profile_io.hpp"
 #include "ctab/tables/table.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "ctab/wheelrail/wheelrail_options.hpp"
@@ -26,8 +27,6 @@ inline constexpr double kMinStripWidth_m = 10e-6;
 inline constexpr double kMaxStripWidth_m = 5e-3;
 //! Largest smoothing length of point profiles [m] (chosen: 100x the default 1 mm catches "1" meant as mm).
 inline constexpr double kMaxSmoothingLength_m = 0.1;
-//! The value of [profiles] smoothing_m and --smoothing that chooses the length from the points' noise.
-inline constexpr const char* kSmoothingAuto = "auto";
 //! Most patch slots per wheel and case in the table ([output] patch_slots).
 inline constexpr std::size_t kMaxPatchSlots = 16;
 //! Most cases (lateral shifts x loads) per table. Chosen: at about 1 ms per wheel solve this is an hour on 1 core.
@@ -42,9 +41,9 @@ struct TableConfig {
   std::string wheel = "S1002";     //!< built-in name or profile file
   std::string rail = "UIC60";
   std::string inclination_text = "1/40";
-  double inclination = 1.0 / 40.0;   //!< rail inclination tan(angle); 0: the rail file is already inclined
-  bool smoothing_auto = true;        //!< smoothing_m = "auto": L chosen from each point profile's noise
-  double smoothing_length_m = 1e-3;  //!< smoothing length of point profiles [m] when not automatic
+  double inclination = 1.0 / 40.0;  //!< rail inclination tan(angle); 0: the rail file is already inclined
+  //! [profiles] smoothing_m for both, wheel_smoothing_m / rail_smoothing_m for one: "auto", "auto-arcs" or a length
+  SmoothingSetting wheel_smoothing, rail_smoothing;
   TrackSetup track;
   ElasticMaterial material = kSteel;  //!< both bodies
   ContactMode mode = ContactMode::Wheelset;
