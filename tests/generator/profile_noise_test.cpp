@@ -455,23 +455,16 @@ TEST(SmoothingOption, ConfigTakesAutoAutoArcsOrALength) {
             "c.toml:3: 'profiles.rail_smoothing_m': " + expected);
 }
 
-// 60E1 1:40 with 5 um noise as a 2-column file (mm), inclined already.
-std::string noisy_rail_file() {
-  const SampledPoints p = noisy_points(exact_rail(), 5e-6, 11u);
+// An exact profile with 5 um noise as a 2-column file (mm).
+std::string noisy_profile_file(const ProfileTable& exact, const std::string& name) {
+  const SampledPoints p = noisy_points(exact, 5e-6, 11u);
   std::ostringstream text;
   text.precision(10);
   for (std::size_t i = 0; i < p.y_m.size(); ++i) text << p.y_m[i] * 1e3 << ' ' << p.z_m[i] * 1e3 << '\n';
-  return test::write_temp("noisy_60e1.txt", text.str());
+  return test::write_temp(name, text.str());
 }
-
-// S1002 with 5 um noise as a 2-column file (mm).
-std::string noisy_wheel_file() {
-  const SampledPoints p = noisy_points(exact_wheel(), 5e-6, 11u);
-  std::ostringstream text;
-  text.precision(10);
-  for (std::size_t i = 0; i < p.y_m.size(); ++i) text << p.y_m[i] * 1e3 << ' ' << p.z_m[i] * 1e3 << '\n';
-  return test::write_temp("noisy_s1002.txt", text.str());
-}
+std::string noisy_wheel_file() { return noisy_profile_file(exact_wheel(), "noisy_s1002.txt"); }
+std::string noisy_rail_file() { return noisy_profile_file(exact_rail(), "noisy_60e1.txt"); }  // inclined already
 
 TEST(SmoothingOption, TablesRecordTheChosenLengthAndNoise) {
   const std::string file = noisy_wheel_file();

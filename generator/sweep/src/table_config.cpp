@@ -21,7 +21,8 @@ const char* const kDefaultTableConfig = R"(# ctab default table: S1002 on UIC60 
 wheel = "S1002"          # built-in S1002, or a profile file (.prw, .whl, 2-column y z in mm)
 rail = "UIC60"           # built-in 60E1 (UIC60), or a profile file (.prr, .ban, ...)
 inclination = "1/40"     # rail inclination; "0" for a rail file that is already inclined
-smoothing_m = "auto"     # point profiles: "auto" (from the points' noise; 1 mm when clean) or a length [m]
+smoothing_m = "auto"     # point profiles: "auto" (from the points' noise; 1 mm when clean), "auto-arcs" (the same for
+                         # profiles drawn as arcs and lines, e.g. new rails) or a length [m]; wheel_/rail_smoothing_m: one body
 
 [track]
 gauge_m = 1.435
