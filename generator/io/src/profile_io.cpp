@@ -442,7 +442,7 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
   const SmoothedPointCurve smoothed = smooth_point_profile(points.y_m, points.z_m, choice);
   smoothing = {true,
                options.smoothing.automatic,
-               choice.length_m,
+               smoothed.length_m,
                smoothed.shortest_length_m,
                choice.noise_sigma_m,
                choice.adaptive && choice.prior == CurvaturePrior::Arcs ? smoothed.arc_junctions : -1};

@@ -43,17 +43,43 @@ std::vector<Window> windows_of(const std::vector<double>& s) {
 }
 
 // Iteratively reweighted penalised least squares of both coordinates: Huber's weights rho_j on the windows' penalty,
-// but 0 throughout on the `freed` windows.
+// 0 throughout on the `freed` windows. Penalty::Coordinates penalises the windows' third derivatives f_j'''.
+// Penalty::Circle penalises their departure from a circle's, f_j''' + kappa_j^2 T_j (a circle at unit speed has
+// f''' = -kappa^2 T), with kappa_j and T_j from the last pass (the first from `start`), so that an arc of any radius
+// passes untouched while a change of its curvature is penalised as before.
+enum class Penalty { Coordinates, Circle };
+
 struct ReweightedFit {
   Eigen::VectorXd fy, fz;
   std::vector<double> rho;
 };
 
+// The unit tangent of window j's middle chord and the window's curvature, the mean of the two Menger curvatures
+// (4 area / product of sides) of its point triples [1/m].
+struct WindowShape {
+  double tangent_y = 0.0, tangent_z = 0.0, curvature = 0.0;
+};
+
+WindowShape window_shape(std::size_t j, const ReweightedFit& fit) {
+  auto menger = [&](std::size_t first) {
+    const auto i = static_cast<Eigen::Index>(first);
+    const double uy = fit.fy(i + 1) - fit.fy(i), uz = fit.fz(i + 1) - fit.fz(i);
+    const double vy = fit.fy(i + 2) - fit.fy(i + 1), vz = fit.fz(i + 2) - fit.fz(i + 1);
+    const double wy = fit.fy(i + 2) - fit.fy(i), wz = fit.fz(i + 2) - fit.fz(i);
+    return 2.0 * (uy * vz - uz * vy) / (std::hypot(uy, uz) * std::hypot(vy, vz) * std::hypot(wy, wz));
+  };
+  const auto middle = static_cast<Eigen::Index>(j + 1);
+  const double ey = fit.fy(middle + 1) - fit.fy(middle), ez = fit.fz(middle + 1) - fit.fz(middle);
+  const double chord = std::hypot(ey, ez);
+  return {ey / chord, ez / chord, 0.5 * (menger(j) + menger(j + 1))};
+}
+
 ReweightedFit reweighted_fit(const std::vector<double>& y, const std::vector<double>& z, const std::vector<double>& w,
                              const std::vector<Window>& windows, double lambda, double tau,
-                             const std::vector<bool>& freed) {
+                             const std::vector<bool>& freed, Penalty penalty, const ReweightedFit* start = nullptr) {
   const std::size_t n = y.size();
   ReweightedFit fit;
+  if (start) fit = *start;
   fit.rho.assign(windows.size(), 1.0);
   for (std::size_t j = 0; j < windows.size(); ++j)
     if (freed[j]) fit.rho[j] = 0.0;
@@ -62,27 +88,40 @@ ReweightedFit reweighted_fit(const std::vector<double>& y, const std::vector<dou
     wy(static_cast<Eigen::Index>(i)) = w[i] * y[i];
     wz(static_cast<Eigen::Index>(i)) = w[i] * z[i];
   }
+  Eigen::VectorXd right_y = wy, right_z = wz;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(n + windows.size() * (kOrder + 1) * (kOrder + 1));
   Eigen::SparseMatrix<double> system(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
   for (int iteration = 0;; ++iteration) {
-    // (W + lambda D^T diag(rho c) D) f = W x for both coordinates
+    // (W + lambda D^T diag(rho c) D) f = W x + lambda D^T diag(rho c) b for both coordinates, b = 0 or, for
+    // Penalty::Circle, each window's -kappa^2 T
     entries.clear();
     for (std::size_t i = 0; i < n; ++i)
       entries.emplace_back(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i), w[i]);
+    if (penalty == Penalty::Circle) {
+      right_y = wy;
+      right_z = wz;
+    }
     for (std::size_t j = 0; j < windows.size(); ++j) {
       const double factor = lambda * fit.rho[j] * windows[j].length_third;
       for (std::size_t a = 0; a <= kOrder; ++a)
         for (std::size_t b = 0; b <= kOrder; ++b)
           entries.emplace_back(static_cast<Eigen::Index>(j + a), static_cast<Eigen::Index>(j + b),
                                factor * windows[j].coefficient[a] * windows[j].coefficient[b]);
+      if (penalty != Penalty::Circle || factor == 0.0) continue;
+      const WindowShape shape = window_shape(j, fit);
+      const double offset = -factor * shape.curvature * shape.curvature;
+      for (std::size_t a = 0; a <= kOrder; ++a) {
+        right_y(static_cast<Eigen::Index>(j + a)) += offset * windows[j].coefficient[a] * shape.tangent_y;
+        right_z(static_cast<Eigen::Index>(j + a)) += offset * windows[j].coefficient[a] * shape.tangent_z;
+      }
     }
     system.setFromTriplets(entries.begin(), entries.end());
     if (iteration == 0) solver.analyzePattern(system);
     solver.factorize(system);
-    fit.fy = solver.solve(wy);
-    fit.fz = solver.solve(wz);
+    fit.fy = solver.solve(right_y);
+    fit.fz = solver.solve(right_z);
     if (iteration == kAdaptiveIterations) break;
     // Huber weights from dkappa/ds = N . f''' (the tangent from the window's middle chord)
     for (std::size_t j = 0; j < windows.size(); ++j) {
@@ -158,11 +197,16 @@ AdaptivelySmoothedPoints smooth_adaptively(const std::vector<double>& y, const s
       kAdaptiveHuberThreshold *
       adaptive_curvature_slope_noise_per_m2(noise_sigma_m, s.back() / static_cast<double>(n - 1), length_m);
   std::vector<bool> freed(windows.size(), false);
-  ReweightedFit fit = reweighted_fit(y, z, w, windows, lambda, tau, freed);
+  ReweightedFit fit = reweighted_fit(y, z, w, windows, lambda, tau, freed, Penalty::Coordinates);
   AdaptivelySmoothedPoints out;
+  out.length_m = length_m;
   if (prior == CurvaturePrior::Arcs) {
+    // the junctions from the smooth fit, then the arcs between them with the circle's penalty, which leaves an arc
+    // untouched, and a longer length (tau scales as the smoothed noise's dkappa/ds, L^-3.5)
     freed = arc_junction_windows(y, z, s, fit, noise_sigma_m, windows.size());
-    fit = reweighted_fit(y, z, w, windows, lambda, tau, freed);
+    out.length_m = kArcLengthFactor * length_m;
+    fit = reweighted_fit(y, z, w, windows, lambda_of(out.length_m), tau * std::pow(kArcLengthFactor, -3.5), freed,
+                         Penalty::Circle, &fit);
     for (std::size_t j = 0; j < windows.size(); ++j)
       if (freed[j])
         out.junction_y_m.push_back(
@@ -173,7 +217,7 @@ AdaptivelySmoothedPoints smooth_adaptively(const std::vector<double>& y, const s
   double shortest_rho = 1.0;
   for (std::size_t j = 0; j < windows.size(); ++j)
     if (!freed[j]) shortest_rho = std::min(shortest_rho, fit.rho[j]);
-  out.shortest_length_m = length_m * std::pow(shortest_rho, 1.0 / 6.0);
+  out.shortest_length_m = out.length_m * std::pow(shortest_rho, 1.0 / 6.0);
   return out;
 }
 

@@ -90,11 +90,12 @@ SmoothingChoice choose_smoothing(const std::vector<double>& y, const std::vector
 
 SmoothedPointCurve smooth_point_profile(const std::vector<double>& y, const std::vector<double>& z,
                                         const SmoothingChoice& choice) {
-  if (!choice.adaptive) return {std::make_shared<SmoothingSplineCurve>(y, z, choice.length_m), choice.length_m};
+  if (!choice.adaptive)
+    return {std::make_shared<SmoothingSplineCurve>(y, z, choice.length_m), choice.length_m, choice.length_m};
   const AdaptivelySmoothedPoints smoothed =
       smooth_adaptively(y, z, choice.length_m, choice.noise_sigma_m, choice.prior);
-  return {std::make_shared<SmoothingSplineCurve>(smoothed.y_m, smoothed.z_m, 0.0), smoothed.shortest_length_m,
-          static_cast<int>(smoothed.junction_y_m.size())};
+  return {std::make_shared<SmoothingSplineCurve>(smoothed.y_m, smoothed.z_m, 0.0), smoothed.length_m,
+          smoothed.shortest_length_m, static_cast<int>(smoothed.junction_y_m.size())};
 }
 
 CurvePoint SmoothingSplineCurve::at(double t) const {
