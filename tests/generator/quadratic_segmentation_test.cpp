@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -62,6 +63,58 @@ TEST(QuadraticSegmentation, FindsJoinsNearWhereTheCurvatureJumps) {
                   2.0)
           << seed << " #" << k;
     }
+  }
+}
+
+// The residual sum of a quadratic fitted to g over [a, b) by the normal equations, u centred and scaled.
+double quadratic_residual(const Signal& s, std::size_t a, std::size_t b) {
+  const double mid = 0.5 * (s.t[a] + s.t[b - 1]), half = 0.5 * (s.t[b - 1] - s.t[a]);
+  double m[3][4] = {};
+  for (std::size_t i = a; i < b; ++i) {
+    const double u = (s.t[i] - mid) / half, row[3] = {1.0, u, u * u};
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) m[r][c] += row[r] * row[c];
+      m[r][3] += row[r] * s.g[i];
+    }
+  }
+  for (int k = 0; k < 3; ++k)  // Gauss-Jordan, SPD: no pivoting
+    for (int r = 0; r < 3; ++r) {
+      if (r == k) continue;
+      const double f = m[r][k] / m[k][k];
+      for (int c = k; c < 4; ++c) m[r][c] -= f * m[k][c];
+    }
+  double rss = 0.0;
+  for (std::size_t i = a; i < b; ++i) {
+    const double u = (s.t[i] - mid) / half;
+    const double e = s.g[i] - (m[0][3] / m[0][0] + u * m[1][3] / m[1][1] + u * u * m[2][3] / m[2][2]);
+    rss += e * e;
+  }
+  return rss;
+}
+
+// The pruned search (PELT) gives the partition of the search over every piece (here by brute force).
+TEST(QuadraticSegmentation, PrunedSearchMatchesTheFullSearch) {
+  constexpr std::size_t kMin = 8;
+  for (const unsigned seed : {1u, 2u, 3u, 4u}) {
+    const Signal s = joined_parabolas({40, 95, 120, 170}, {3.0, 40.0, -20.0, 5.0, 60.0}, 220, 5e-6, seed);
+    const double penalty = 30.0 * 25e-12;
+    const std::size_t n = s.t.size();
+    std::vector<double> best{0.0};  // the least cost of points [0, b)
+    best.resize(n + 1, 1e300);
+    std::vector<std::size_t> start(n + 1, 0);
+    for (std::size_t a = 0; a + kMin <= n; ++a) {
+      if (best[a] >= 1e300) continue;
+      for (std::size_t b = a + kMin; b <= n; ++b) {
+        if (b < n && n - b < kMin) continue;
+        const double cost = best[a] + quadratic_residual(s, a, b) + penalty;
+        if (cost < best[b]) best[b] = cost, start[b] = a;
+      }
+    }
+    std::vector<std::size_t> expected;
+    for (std::size_t end = n; start[end] > 0; end = start[end]) expected.push_back(start[end]);
+    std::reverse(expected.begin(), expected.end());
+    EXPECT_EQ(quadratic_segmentation(s.t, s.g, penalty, kMin), expected) << seed;
+    EXPECT_GE(expected.size(), 3u) << seed;  // the data do have pieces
   }
 }
 

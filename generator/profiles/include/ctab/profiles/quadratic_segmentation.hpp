@@ -1,8 +1,9 @@
 #pragma once
 //! Optimal partitioning of a sampled signal into quadratic pieces (Jackson et al. 2005, "An algorithm for optimal
 //! partitioning of data on an interval"): the boundaries that minimise sum over pieces of (the least-squares residual
-//! of a quadratic in t fitted to the piece + a penalty per piece), by dynamic programming over all O(n^2) pieces, each
-//! piece's residual updated point by point with Givens rotations. The adaptive smoother's arcs prior
+//! of a quadratic in t fitted to the piece + a penalty per piece), by dynamic programming over the pieces, each piece's
+//! residual updated point by point with Givens rotations, the starts that can no longer win pruned (PELT; Killick,
+//! Fearnhead & Eckley 2012: about linear in n where pieces are long). The adaptive smoother's arcs prior
 //! (adaptive_smoothing.hpp) finds a profile's junctions with it: a circular arc is a quadratic normal offset.
 #include <cstddef>
 #include <vector>
@@ -18,7 +19,8 @@ namespace ctab::gen {
 
 //! The first point after a jump in g's second derivative: g_i at t_i over [begin, end) fitted by c0 + c1 u + c2 u^2 +
 //! c3 max(u - u_j, 0)^2 (value and slope continuous at u_j, the middle between the point and the one before), the
-//! least residual over the points with at least `margin` (>= 2) points on either side.
+//! least residual over the points with at least `margin` (>= 2) points on either side (each in O(end - begin), by the
+//! jump's column projected off the quadratic's).
 [[nodiscard]] std::size_t refine_curvature_jump(const std::vector<double>& t, const std::vector<double>& g,
                                                 std::size_t begin, std::size_t end, std::size_t margin);
 
