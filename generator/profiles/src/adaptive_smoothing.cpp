@@ -201,18 +201,19 @@ AdaptivelySmoothedPoints smooth_adaptively(const std::vector<double>& y, const s
   AdaptivelySmoothedPoints out;
   out.length_m = length_m;
   if (prior == CurvaturePrior::Arcs) {
-    // the junctions from the smooth fit, then the arcs between them with the circle's penalty, which leaves an arc
-    // untouched, and a longer length (tau scales as the smoothed noise's dkappa/ds, L^-3.5)
-    // the junctions in arc length along the smooth fit: the points' own summed chords grow with their noise along the
-    // profile (by delta^2 / 2h a step: 4 % at 0.025 mm spacing with 5 um noise where the profile is steep), which bent
-    // 60E1's R13 arcs enough to add a junction in each at that spacing
+    // The junctions from the smooth fit, then the arcs between them with the circle's penalty, which leaves an arc
+    // untouched, and a longer length (tau scales as the smoothed noise's dkappa/ds, L^-3.5). Both in arc length along
+    // the smooth fit: the points' own summed chords grow with their noise along the profile (by delta^2 / 2h a step:
+    // 4 % at 0.025 mm spacing with 5 um noise where the profile is steep), which bends arcs in s; at that spacing 60E1
+    // gained a junction inside each R13 arc, and its contacts read area and max pressure 25 and 41 % off (1.4 and
+    // 2.1 % along the fit).
     std::vector<double> smooth_y(fit.fy.data(), fit.fy.data() + n), smooth_z(fit.fz.data(), fit.fz.data() + n);
     std::vector<double> smooth_s, smooth_weights;
     summed_chord_arc_length(smooth_y, smooth_z, smooth_s, smooth_weights);
     freed = arc_junction_windows(y, z, smooth_s, fit, noise_sigma_m, windows.size());
     out.length_m = kArcLengthFactor * length_m;
-    fit = reweighted_fit(y, z, w, windows, lambda_of(out.length_m), tau * std::pow(kArcLengthFactor, -3.5), freed,
-                         Penalty::Circle, &fit);
+    fit = reweighted_fit(y, z, smooth_weights, windows_of(smooth_s), lambda_of(out.length_m),
+                         tau * std::pow(kArcLengthFactor, -3.5), freed, Penalty::Circle, &fit);
     for (std::size_t j = 0; j < windows.size(); ++j)
       if (freed[j])
         out.junction_y_m.push_back(

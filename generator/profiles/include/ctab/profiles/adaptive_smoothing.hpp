@@ -18,7 +18,7 @@
 //! L rho^(1/6); the arcs prior takes the profile for circular arcs and straight lines, as new rails and many wheel
 //! profiles are drawn: it finds the junctions (the optimal partition of the points into arcs, quadratic_segmentation)
 //! and frees the penalty of the one window that straddles each, so the curvature jumps there, then smooths the arcs
-//! between the junctions with twice the length and a penalty on the departure from a circle (kArcLengthFactor). On a
+//! between the junctions with 1.5 times the length and a penalty on the departure from a circle (kArcLengthFactor). On a
 //! profile that is not made of arcs (S1002's polynomial tread) the arcs prior finds a junction every few mm and is
 //! worse than the smooth prior (README "How to choose the smoothing").
 #include <cstddef>
@@ -49,17 +49,15 @@ inline constexpr double kAdaptiveHuberThreshold = 10.0;
 //! figures are for 30.
 inline constexpr int kAdaptiveIterations = 30;
 //! Arcs prior: the penalty per piece of the partition into arcs, in noise variances (quadratic_segmentation.hpp).
-//! 60E1 1:40 with 5 um noise (10 seeds): worst max pressure 8.8 / 5.1 / 5.1 % at 15, 30 and 60 (at 15 some seed
+//! 60E1 1:40 with 5 um noise (10 seeds): worst max pressure 8.2 / 4.8 / 4.8 % at 15, 30 and 60 (at 15 some seed
 //! gains a junction noise made); chosen 30.
 inline constexpr double kArcJunctionPenalty = 30.0;
 //! Arcs prior: the length between the junctions, as a multiple of the one asked for. There the penalty is on the
 //! departure of the third derivative from a circle's (f''' + kappa^2 T), which leaves an arc untouched, so a longer
-//! length mostly lowers the noise. 60E1 1:40 with 5 um noise (10 seeds) reads its worst max pressure 6.5 / 5.0 / 5.1
-//! / 5.6 / 5.9 % at 1, 1.5, 2, 2.5 and 3 (with the junctions placed in the points' own summed chords, 4.9 / 4.8 / 4.5
-//! % at 1.5, 2, 2.5; the plain third-derivative penalty, which bends arcs: 6.4 / 5.6 / 5.5 % at 1, 1.5, 2); the
-//! crown's curvature error 1 mm from its junctions (seeds 1-3) falls from 0.28-0.33 /m at 1 to 0.19-0.26 at 2 and
-//! 0.13-0.15 at 4. Chosen: 2.
-inline constexpr double kArcLengthFactor = 2.0;
+//! length mostly lowers the noise. 60E1 1:40 with 5 um noise on points every 0.1 mm (10 seeds) reads its worst max
+//! pressure 4.8 / 5.9 / 6.6 / 7.5 % at 1.5, 2, 2.5 and 3 (the plain third-derivative penalty, which bends arcs: 6.4 /
+//! 5.6 / 5.5 % at 1, 1.5, 2); at 1.5 and 0.025 / 0.05 / 0.2 mm spacing (3 seeds) 2.1 / 2.5 / 4.0 %. Chosen: 1.5.
+inline constexpr double kArcLengthFactor = 1.5;
 //! Arcs prior: the fewest points of a piece (chosen; 1 mm at 0.1 mm spacing).
 inline constexpr std::size_t kArcMinPoints = 10;
 

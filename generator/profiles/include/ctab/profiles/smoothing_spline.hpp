@@ -50,8 +50,8 @@ struct SmoothingChoice {
 //! about 7.4, 10.6 and 11 (capped from 14) mm.
 [[nodiscard]] SmoothingChoice choose_smoothing(const std::vector<double>& y, const std::vector<double>& z);
 
-//! A point profile smoothed as chosen, the length used (twice choice.length_m between the arcs prior's junctions,
-//! kArcLengthFactor) and the shortest local length the adaptive smoother used [m] (L for the cubic spline).
+//! A point profile smoothed as chosen, the length used (kArcLengthFactor times choice.length_m between the arcs prior's
+//! junctions) and the shortest local length the adaptive smoother used [m] (L for the cubic spline).
 struct SmoothedPointCurve {
   std::shared_ptr<const ProfileCurve> curve;
   double length_m = 0.0;
