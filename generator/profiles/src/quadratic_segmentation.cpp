@@ -12,12 +12,13 @@ namespace ctab::gen {
 
 namespace {
 
-// Linear least squares with N unknowns, one row at a time: R (upper triangular) and Q^T g of the rows so far, and the
-// residual sum of squares (Givens rotations; Golub & Van Loan 5.1.8).
-template <std::size_t N>
-class IncrementalFit {
+// Least squares of g ~ c0 + c1 u + c2 u^2, one point at a time: R (upper triangular) and Q^T g of the points so far,
+// and the residual sum of squares (Givens rotations; Golub & Van Loan 5.1.8).
+class IncrementalQuadraticFit {
  public:
-  void add(std::array<double, N> row, double g) {
+  static constexpr std::size_t N = 3;
+  void add(double u, double g) {
+    std::array<double, N> row{1.0, u, u * u};
     double value = g;
     for (std::size_t k = 0; k < N; ++k) {
       if (row[k] == 0.0) continue;
@@ -62,7 +63,7 @@ std::vector<std::size_t> quadratic_segmentation(const std::vector<double>& t, co
   // The partition is the one of the search over all pieces, ties included (starts kept in order, drops strict).
   struct Candidate {
     std::size_t first = 0;
-    IncrementalFit<3> fit;
+    IncrementalQuadraticFit fit;
     std::vector<double> residuals;  // residual(first, end) at end % residuals.size()
   };
   const std::size_t history = min_points + 1;
@@ -70,10 +71,10 @@ std::vector<std::size_t> quadratic_segmentation(const std::vector<double>& t, co
   for (std::size_t end = 1; end <= n; ++end) {
     const std::size_t point = end - 1;
     if (std::isfinite(best[point]) && point + min_points <= n)
-      live.push_back({point, IncrementalFit<3>{}, std::vector<double>(history, 0.0)});
+      live.push_back({point, IncrementalQuadraticFit{}, std::vector<double>(history, 0.0)});
     for (Candidate& c : live) {
       const double u = (t[point] - t[c.first]) / scale;
-      c.fit.add({1.0, u, u * u}, g[point]);
+      c.fit.add(u, g[point]);
       c.residuals[end % history] = c.fit.residual();
     }
     if (end >= n || n - end >= min_points)
