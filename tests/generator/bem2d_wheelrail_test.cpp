@@ -63,6 +63,7 @@ class Bem2dWheelRail : public ctab::test::ManchesterSuite<Case> {
     const ContactRow ref = contact_row(c);
     ASSERT_GT(ref.rows, 0) << c.file << " has no row at dy " << c.dy_mm;
     WheelRailOptions options;
+    options.surface = ContactSurface::Planar;  // CONTACT's planar results
     options.method = NormalMethod::Bem2d;
     options.bem2d_alignment = GridAlignment::CentresAtOrigin;
     if (plane == Plane::Ctab) {

@@ -35,7 +35,8 @@ std::string config_text(const std::string& surface) {
 }  // namespace
 
 TEST(CliSurface, ConformalTurnsTheFlangeRootForce) {
-  const auto planar = solve_root({}), conformal = solve_root({"--surface", "conformal"});
+  // the conformal surface is the default
+  const auto planar = solve_root({"--surface", "planar"}), conformal = solve_root({});
   EXPECT_EQ(planar["surface"], "planar");
   EXPECT_EQ(conformal["surface"], "conformal");
   const auto &p = planar["right"], &c = conformal["right"];

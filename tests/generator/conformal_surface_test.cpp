@@ -93,8 +93,9 @@ TEST_F(ConformalSurface, ApproachLoading) {
 
 // Where the strips sit. With CONTACT's reference rule they take CONTACT's wheel-rail grid: a strip centred on the
 // reference point (s = k 2b), and on the conformal surface s = 0 is the surface point above the reference rail point
-// (CONTACT's row at s = 0 has the reference point's y_rail); with the deepest point (the default) strip edges sit at
-// the reference point (s = (k + 1/2) 2b).
+// (CONTACT's row at s = 0 has the reference point's y_rail). The conformal surface at the deepest point (the default)
+// centres its strips on CONTACT's reference point as well (s_origin_y_rail_m, the rail y of s = 0); the planar
+// surface at the deepest point puts strip edges there (s = (k + 1/2) 2b).
 TEST(StripPlacement, FollowsContactsGridWithItsReferenceRule) {
   const ProfileTable wheel{*s1002_curve(), kProfileTableStep_m, "S1002"};
   const ProfileTable rail{*uic60_inclined_curve(1.0 / 40.0), kProfileTableStep_m, "60E1"};
@@ -109,20 +110,24 @@ TEST(StripPlacement, FollowsContactsGridWithItsReferenceRule) {
                                                    LoadKind::VerticalForce, kLoad_N, options);
         ASSERT_TRUE(is_success(c.status)) << c.detail;
         const ContactPatch& main = c.patches.front();
-        const double width = options.mim1d.strip_width_m, offset = contacts_rule ? 0.0 : 0.5;
+        const bool conformal = surface == ContactSurface::Conformal;
+        const double width = options.mim1d.strip_width_m, offset = contacts_rule || conformal ? 0.0 : 0.5;
         const std::string where = std::string(surface_name(surface)) + (contacts_rule ? " centre" : " deepest") +
                                   " dy " + std::to_string(dy_mm) + " mm";
         bool at_reference = false;
         for (const PatchStrip& s : main.strips) {
           const double k = s.s_m / width - offset;
           EXPECT_NEAR(k, std::round(k), 1e-6) << where << ": strip at s " << s.s_m;
-          if (contacts_rule && surface == ContactSurface::Conformal && std::abs(s.s_m) < 1e-9) {
+          if (conformal && std::abs(s.s_m) < 1e-9) {
             at_reference = true;
-            EXPECT_NEAR(s.y_rail_m, main.y_rail_m, 1e-9) << where;
+            EXPECT_NEAR(s.y_rail_m, main.s_origin_y_rail_m, 1e-9) << where;
+            if (contacts_rule) EXPECT_NEAR(s.y_rail_m, main.y_rail_m, 1e-9) << where;
           }
         }
-        if (contacts_rule && surface == ContactSurface::Conformal) {
+        if (conformal) {
           EXPECT_TRUE(at_reference) << where;
+        } else {
+          EXPECT_TRUE(std::isnan(main.s_origin_y_rail_m)) << where;  // the plane's tangent point (table_generator)
         }
       }
 }

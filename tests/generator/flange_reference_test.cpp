@@ -19,16 +19,23 @@ using namespace ctab::test::flange;
 
 namespace {
 
+// The planar surface (the conformal one is the default: conformal_reference_test).
+WheelRailOptions planar() {
+  WheelRailOptions options;
+  options.surface = ContactSurface::Planar;
+  return options;
+}
+
 // CONTACT's reference point: the centre of the interpenetration region (WheelRailOptions).
 WheelRailOptions centred_options() {
-  WheelRailOptions options;
+  WheelRailOptions options = planar();
   options.reference_at_interpenetration_centre = true;
   return options;
 }
 
 // The deepest point's plane inclined at CONTACT's reference angle (WheelRailOptions::reference_angle).
 WheelRailOptions deepest_at_contacts_angle() {
-  WheelRailOptions options;
+  WheelRailOptions options = planar();
   options.reference_angle = ReferenceAngle::InterpenetrationMean;
   return options;
 }
@@ -87,7 +94,9 @@ TEST_F(FlangeReference, ContactsAngleAtTheDeepestPointIsCentresAngle) {
   for (const char* loading : {"vertical_load", "normal_force"}) {
     for (double dy : {5.5, 6.5, 7.0, 7.5}) {
       const Case c{loading, dy, "", {}};
-      const WheelContact tangent = solve(c, WheelRailOptions{});
+      WheelRailOptions tangent_options = planar();
+      tangent_options.reference_angle = ReferenceAngle::Tangent;
+      const WheelContact tangent = solve(c, tangent_options);
       const WheelContact deepest = solve(c, deepest_at_contacts_angle());
       const WheelContact centre = solve(c, centred_options());
       ASSERT_EQ(deepest.status, SolveStatus::Converged) << deepest.detail;
@@ -141,7 +150,7 @@ TEST_F(FlangeReference, DefaultKeepsTheDeepestPointAtContactsAngle) {
     EXPECT_EQ(c.patches.size(), 1u);
     return c.patches.front();
   };
-  WheelRailOptions tangent;
+  WheelRailOptions tangent = planar();
   tangent.reference_angle = ReferenceAngle::Tangent;
   const ContactPatch by_default = solve(WheelRailOptions{}), at_tangent = solve(tangent),
                      at_centre = solve(centred_options());

@@ -26,6 +26,7 @@ class FlankGrid : public ctab::test::ManchesterSuite<const char*> {
  protected:
   static WheelContact solve(NormalMethod method, double width_m, LoadKind kind, double length_m = 0.0) {
     WheelRailOptions options;
+    options.surface = ContactSurface::Planar;  // CONTACT's planar results
     options.bem2d_element_length_m = length_m;
     options.reference_at_interpenetration_centre = true;  // CONTACT's rule, as flange_reference_test
     options.method = method;

@@ -131,6 +131,7 @@ TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRuleOrAngle) {
   const SummaryRow ref = summary_row(c.dy_mm);
   ASSERT_TRUE(ref.found);
   WheelRailOptions centre, deepest_at_contacts_angle;
+  centre.surface = deepest_at_contacts_angle.surface = ContactSurface::Planar;  // a plane's identities
   centre.reference_at_interpenetration_centre = true;
   deepest_at_contacts_angle.reference_angle = ReferenceAngle::InterpenetrationMean;
   for (const WheelRailOptions& options : {centre, deepest_at_contacts_angle}) {

@@ -42,7 +42,7 @@ strip_width_m = 0.2e-3
 reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
 reference_angle = "interpenetration-mean"  # plane inclination: CONTACT's mean over the interpenetration region,
                                           # or "tangent" (the rail's at the deepest point; README "Flange and flank")
-surface = "planar"       # contact surface: "planar" (one plane per patch) or "conformal" (curved, CONTACT D=4)
+surface = "conformal"    # contact surface: "conformal" (curved, CONTACT D=4) or "planar" (one plane per patch)
 warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; README "Speed")
 
 [axes]
@@ -286,7 +286,7 @@ void read_solver(const Reader& r, TableConfig& c) {
              "\"tangent\" needs reference_point = \"deepest\": CONTACT's reference point (\"interpenetration-centre\") "
              "takes CONTACT's reference angle");
   }
-  const std::optional<ContactSurface> surface = parse_contact_surface(r.text("solver", "surface", "planar"));
+  const std::optional<ContactSurface> surface = parse_contact_surface(r.text("solver", "surface", "conformal"));
   if (!surface)
     r.fail(*r.find("solver", "surface"), "solver.surface",
            "expected \"planar\" or \"conformal\", got \"" + r.text("solver", "surface", "") + "\"");

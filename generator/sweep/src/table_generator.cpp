@@ -252,6 +252,7 @@ double sample_strips(const std::vector<PatchStrip>& strips, double s, bool press
 // has it as its contact point; otherwise (a run split off the reference window) the tangent point is found by
 // secant steps on the rail slope from the strips' linear extrapolation to s = 0.
 double s_origin_y_rail(const ContactPatch& patch, const ProfileTable& rail) {
+  if (std::isfinite(patch.s_origin_y_rail_m)) return patch.s_origin_y_rail_m;  // conformal: the surface's origin
   if (patch.s_min_m <= 0.0 && patch.s_max_m >= 0.0) return patch.y_rail_m;
   const auto& strips = patch.strips;
   double y = patch.y_rail_m;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -72,6 +73,9 @@ constexpr double kMaxCentreSlope = 0.5;
 // approach and following it alternates (90 max-iterations in the 0.01 mm sweep, built-in profiles, single wheel).
 // Chosen: planar cases settle in 2-4 passes.
 constexpr int kCentreFollowingPasses = 6;
+// A conformal grid that follows the centre moves a pass's warm start to first order (shift_pass_start) while the move
+// stays below this share of a strip (chosen: the strips keep their index up to half a strip).
+constexpr double kPredictedGridMove = 0.5;
 // Prescribed load: the gap is re-sampled at the solved vertical approach until it moves by less than 1 nm (1e-5 of
 // a typical 0.1 mm approach) and the vertical load balances to 1e-10 (issue 8: 1e-9; the warm-started strip solves
 // scatter by about 2e-11). Planar 2-4 passes (up to 9 where the flank and the root share a window), conformal
@@ -104,10 +108,13 @@ constexpr double kMaxGapSlope = 0.8;
 // With CONTACT's reference rule the strips take CONTACT's wheel-rail grid too: a strip centred on the reference point
 // (its strip files hold rows at s = 0, +-ds, ...), so that ctab's strip k is CONTACT's row k. Off by half a strip,
 // CONTACT's edge row of the flank patch (dy 7.5 mm, normal force, 8 rows) fell between ctab's edge strip and the
-// next: p0 profile RMS 17 % against 3.4 % aligned (flange_reference_test). The deepest point (the default, as the
-// tables were validated) keeps the edges at the origin.
+// next: p0 profile RMS 17 % against 3.4 % aligned (flange_reference_test). The conformal surface centres its grid
+// on CONTACT's reference point at the deepest point too (follow_interpenetration_centre); the planar deepest point
+// keeps the edges at the origin (its tables as they were validated).
 GridAlignment strip_alignment(const WheelRailOptions& options) {
-  return options.reference_at_interpenetration_centre ? GridAlignment::CentresAtOrigin : GridAlignment::EdgesAtOrigin;
+  return options.reference_at_interpenetration_centre || options.surface == ContactSurface::Conformal
+             ? GridAlignment::CentresAtOrigin
+             : GridAlignment::EdgesAtOrigin;
 }
 
 // Whether two reference points are the same point (every field equal: a patch built at either is the same).
@@ -129,6 +136,11 @@ struct PatchProblem {
   GapMinimum reference;
   double angle = 0, c = 1, sn = 0;  // reference angle (rail inclination at the reference point), cos, sin
   double y0 = 0, z0 = 0;            // reference point on the rail (rail y, track z)
+  // Conformal at the deepest point: the rail y of the surface point at s = 0, where the strip grid is centred
+  // (grid_origin_y); NaN: the reference point's. reference_s: s of the reference point on the surface (0 unless
+  // the origin moved).
+  double origin_y = std::numeric_limits<double>::quiet_NaN();
+  double reference_s = 0;
   // Vertical approach of the wheel beyond first contact at which h was sampled [m] (the wheel lowered by it); h
   // holds the separation there plus gap_dz c, so that the strip solver's approach is gap_dz c at that position.
   double gap_dz = 0;
@@ -143,6 +155,8 @@ struct PatchProblem {
   std::vector<double> load_weight;     // scratch: cos of each strip's normal inclination (set_vertical_load_weights)
   std::unique_ptr<Mim1dSolver> solver;
   NormalSolution solution;
+
+  [[nodiscard]] double grid_origin_y() const { return std::isnan(origin_y) ? y0 : origin_y; }
 };
 
 // Creates the patch's MIM-1D solver, or re-targets the one it already has. Returns an empty string, or why not.
@@ -212,7 +226,7 @@ class PatchBuilder {
     sample_side(p, -1, depth, step);
     for (std::vector<double>* v : columns(p)) std::reverse(v->begin(), v->end());
     sample_side(p, +1, depth, step);
-    if (surface_ == ContactSurface::Conformal) start_arc_length_at_reference_y(p);
+    if (surface_ == ContactSurface::Conformal) start_arc_length_at_origin(p);
     return p.gap.size() >= kMinPatchSamples;
   }
 
@@ -285,14 +299,18 @@ class PatchBuilder {
     return true;
   }
 
-  // Conformal: s = 0 at the surface point above the reference rail point (same rail y), as CONTACT's rows lie (its
-  // row at s = 0 has the reference point's y_rail). The marching starts where the rail point's normal meets the
-  // surface instead, which on the flank (69 deg, the surface 0.05 mm inside the rail) lies 0.13 mm further along
-  // the surface: the strips sat 2/3 of a row off CONTACT's.
-  static void start_arc_length_at_reference_y(PatchProblem& p) {
-    if (p.rail_y.size() < 2 || !(p.y0 > p.rail_y.front() && p.y0 < p.rail_y.back())) return;
-    const double origin = interpolate(p.rail_y, p.gap.y_m, p.y0);
+  // Conformal: s = 0 at the surface point above the grid's origin rail point (same rail y), as CONTACT's rows lie
+  // (its row at s = 0 has the reference point's y_rail). The marching starts where the rail point's normal meets
+  // the surface instead, which on the flank (69 deg, the surface 0.05 mm inside the rail) lies 0.13 mm further
+  // along the surface: the strips sat 2/3 of a row off CONTACT's.
+  static void start_arc_length_at_origin(PatchProblem& p) {
+    p.reference_s = 0.0;
+    const auto inside = [&p](double y) { return p.rail_y.size() >= 2 && y > p.rail_y.front() && y < p.rail_y.back(); };
+    const double origin_y = inside(p.grid_origin_y()) ? p.grid_origin_y() : p.y0;
+    if (!inside(origin_y)) return;
+    const double origin = interpolate(p.rail_y, p.gap.y_m, origin_y);
     for (double& s : p.gap.y_m) s -= origin;
+    if (origin_y != p.y0 && inside(p.y0)) p.reference_s = interpolate(p.rail_y, p.gap.y_m, p.y0);
   }
 
   // Conformal: the reference surface point at arc length s_prev + ds (ds = 0: the reference point itself), by a
@@ -548,11 +566,15 @@ struct WheelContactWorkspace::Impl {
   std::vector<GapMinimum> minima;
   std::vector<PatchProblem> pool;  // patch problems; the first `used` are this case's
   Mim1dWarmStart pass_start;       // the main patch's previous pass (solve_main_for_load), when not warm-started
-  Mim1dWarmStart moved_start;      // pass_start moved onto a grid with another origin (pass_start_here)
+  Mim1dWarmStart moved_start;      // pass_start moved onto a grid with another origin (start_on_grid)
   Mim1dWarmStart chain_start;      // the chain's last two solves extrapolated (extrapolate_warm_start)
   std::unique_ptr<Mim1dSolver> other_width;  // resolve_at_strip_width's solver
   std::size_t used = 0;
-  PatchProblem& acquire() { return pool[used++]; }  // the pool is sized before use
+  PatchProblem& acquire() {  // the pool is sized before use
+    PatchProblem& p = pool[used++];
+    p.origin_y = std::numeric_limits<double>::quiet_NaN();
+    return p;
+  }
 };
 
 WheelContactWorkspace::WheelContactWorkspace() : impl_(std::make_unique<Impl>()) {}
@@ -843,7 +865,8 @@ class WheelCase {
       // overstated the normal force, flank reference with the load on the root; conformal, dy 6.65 mm, 48.9 kN:
       // x 0.43 mm, dz -8 um), where the prediction runs to x <= 0: halve x instead.
       if (!(next_x > 0.0 && std::isfinite(next_x))) next_x = kSamplingApproachCut * main.gap_dz;
-      shift_pass_start(main, next_x - main.gap_dz, next_force - force);
+      const double next_origin = pass + 1 < kCentreFollowingPasses ? next_grid_origin(main, next_x) : main.origin_y;
+      shift_pass_start(main, next_x - main.gap_dz, next_force - force, next_origin);
       previous_x = main.gap_dz;
       previous_dz = dz;
       previous_force = force;
@@ -876,10 +899,42 @@ class WheelCase {
 
   // The next pass's warm start: the last solve moved to first order to the next sampling approach (x + dx) and
   // normal force (F + dF), so that the confirming pass starts next to its solution (Mim1dSolver::shift_warm_start).
-  void shift_pass_start(PatchProblem& p, double dx, double dF) {
+  // With a grid origin that moves to rail y next_origin_y (the conformal grid following the centre), strip k then
+  // lies where this pass's s was s_k + ds, ds the new origin's s: its separation changes by h(s_k + ds) - h(s_k)
+  // and its load stays by index. Re-sampling the loads onto the moved grid instead (start_on_grid) cost 1.45x the
+  // MIM-1D iterations of a fixed grid on the conformal default table (3740 against 2585); a move beyond half a strip,
+  // or a failed prediction, still takes that way.
+  void shift_pass_start(PatchProblem& p, double dx, double dF,
+                        double next_origin_y = std::numeric_limits<double>::quiet_NaN()) {
     if (options_.method != NormalMethod::Mim1d || !p.solver || ws_.pass_start.empty()) return;
     fill_strip_gap_rate(p, dx);
-    (void)p.solver->shift_warm_start(p.strip_gap_rate, dF, ws_.pass_start);
+    const bool moves = add_grid_move(p, next_origin_y);
+    if (p.solver->shift_warm_start(p.strip_gap_rate, dF, ws_.pass_start) && moves)
+      ws_.pass_start.origin_y_m = next_origin_y;
+  }
+
+  // shift_pass_start's separation change of a grid origin moving to rail y next_origin_y; false where it does not
+  // move or moves too far for the first order.
+  bool add_grid_move(PatchProblem& p, double next_origin_y) const {
+    const double from_y = p.grid_origin_y();
+    if (!std::isfinite(next_origin_y) || next_origin_y == from_y || p.rail_y.size() < 2) return false;
+    const auto inside = [&p](double y) { return y > p.rail_y.front() && y < p.rail_y.back(); };
+    if (!inside(from_y) || !inside(next_origin_y)) return false;
+    const double ds = interpolate(p.rail_y, p.gap.y_m, next_origin_y) - interpolate(p.rail_y, p.gap.y_m, from_y);
+    const StripGrid& grid = p.solver->grid();
+    if (!(std::abs(ds) < kPredictedGridMove * grid.strip_width_m)) return false;
+    for (std::size_t i = 0; i < grid.size(); ++i)
+      p.strip_gap_rate[i] +=
+          interpolate(p.gap.y_m, p.gap.h_m, grid.y_m[i] + ds) - interpolate(p.gap.y_m, p.gap.h_m, grid.y_m[i]);
+    return true;
+  }
+
+  // The grid origin (rail y) of a pass at sampling approach x: the centre there where the conformal grid follows it,
+  // else the present one.
+  double next_grid_origin(const PatchProblem& p, double x) const {
+    GapMinimum centre;
+    if (!follows_centre() || !centres_conformal_grid() || !centre_at(x, centre)) return p.origin_y;
+    return centre.rail_y_m;
   }
 
   // d dz / d F of the main patch's last strip solve at the same sampling approach [m/N]; empty for the other rungs.
@@ -900,15 +955,19 @@ class WheelCase {
       main.solution = solve_other_rung(main, Loading::normal_force(force));
     } else {
       static const Mim1dWarmStart cold;
-      const Mim1dWarmStart& start = from_previous_pass ? pass_start_here(main)
-                                    : warm_ != nullptr ? ws_.chain_start
-                                                       : cold;
+      // The chain's start on this grid where the conformal grid follows the centre: a neighbour's centre lies up to
+      // a strip away from the one at this case's first sampling approach (by strip index alone, a 0.01 mm chain took
+      // 605 MIM-1D iterations against 568 cold; warm_start_test).
+      const Mim1dWarmStart& start = from_previous_pass         ? start_on_grid(ws_.pass_start, main)
+                                    : warm_ == nullptr         ? cold
+                                    : centres_conformal_grid() ? start_on_grid(ws_.chain_start, main)
+                                                               : ws_.chain_start;
       main.solution = early_stop != nullptr ? main.solver->solve_for_load(force, start, tolerance, *early_stop)
                                             : main.solver->solve_for_load(force, start, tolerance);
     }
     if (options_.method == NormalMethod::Mim1d && is_success(main.solution.status)) {
       main.solver->save_warm_start(main.solution, ws_.pass_start);
-      ws_.pass_start.origin_y_m = main.y0;
+      ws_.pass_start.origin_y_m = main.grid_origin_y();
       ws_.pass_start.origin_angle_rad = main.angle;
       ws_.pass_start.same_contact = true;
     }
@@ -916,13 +975,13 @@ class WheelCase {
     result_.matrix_entries += main.solution.matrix_entries;
   }
 
-  // The previous pass's solution on this pass's grid: where the plane followed the interpenetration centre, its
-  // loads are moved to the same places on the rail (the contact has not moved, only the grid's origin); by strip
+  // A saved solution (the previous pass's) on this pass's grid: where the plane followed the interpenetration centre,
+  // its loads are moved to the same places on the rail (the contact has not moved, only the grid's origin); by strip
   // index alone they were up to a strip off and the pass took 4-7 MIM-1D iterations instead of 2-3.
-  const Mim1dWarmStart& pass_start_here(const PatchProblem& main) {
-    const Mim1dWarmStart& saved = ws_.pass_start;
-    if (saved.empty() || (saved.origin_y_m == main.y0 && saved.origin_angle_rad == main.angle)) return saved;
-    const double shift_m = (main.y0 - saved.origin_y_m) / std::cos(0.5 * (main.angle + saved.origin_angle_rad));
+  const Mim1dWarmStart& start_on_grid(const Mim1dWarmStart& saved, const PatchProblem& main) {
+    const double origin_y = main.grid_origin_y();
+    if (saved.empty() || (saved.origin_y_m == origin_y && saved.origin_angle_rad == main.angle)) return saved;
+    const double shift_m = (origin_y - saved.origin_y_m) / std::cos(0.5 * (main.angle + saved.origin_angle_rad));
     move_warm_start_origin(saved, shift_m, options_.mim1d.strip_width_m, ws_.moved_start);
     return ws_.moved_start;
   }
@@ -960,12 +1019,43 @@ class WheelCase {
   // the whole load solve was repeated at each new centre (2.2x the CPU of the deepest point on the default table).
   // With CONTACT's reference angle at the deepest point only the plane's inclination follows: the passes then settle
   // the approach alone (a plane's gap is the same through any of its points; the point places the strip grid).
+  // The conformal surface at the deepest point centres its strip grid on the centre at the first sampling approach
+  // (CONTACT's grid: its strip k is CONTACT's row k wherever the first approach is close to the solved one) and keeps
+  // it through the passes: its surface does not depend on the point it is marched from, so the point only places the
+  // grid, and a grid that moves with every pass (CONTACT's rule) cost 1.5x the strip-solver iterations on the
+  // default table (3824 against 2592). From the deepest point's own grid the flank's p0 profile was 9.8 % RMS off
+  // CONTACT's rows (dy 7.5 mm, vertical load; target 5 %).
   void follow_interpenetration_centre(PatchProblem& main) const {
-    if (!options_.interpenetration_mean_angle() || options_.prescribed_reference || recentring_) return;
-    GapMinimum centre = ws_.minima[0];
-    if (!interpenetration_centre(centre, main.gap_dz)) return;
-    if (options_.reference_at_interpenetration_centre) main.reference = centre;
-    else main.reference.contact_angle_rad = centre.contact_angle_rad;
+    if (!follows_centre()) return;
+    GapMinimum centre;
+    if (!centre_at(main.gap_dz, centre)) return;
+    if (options_.reference_at_interpenetration_centre) {
+      main.reference = centre;
+      return;
+    }
+    if (options_.interpenetration_mean_angle()) main.reference.contact_angle_rad = centre.contact_angle_rad;
+    if (centres_conformal_grid()) main.origin_y = centre.rail_y_m;
+  }
+
+  bool follows_centre() const {
+    return !options_.prescribed_reference && !recentring_ &&
+           (options_.interpenetration_mean_angle() || centres_conformal_grid());
+  }
+  // The conformal surface at the deepest point centres its strips on CONTACT's reference point (the grid's origin).
+  bool centres_conformal_grid() const {
+    return options_.surface == ContactSurface::Conformal && !options_.reference_at_interpenetration_centre;
+  }
+
+  // interpenetration_centre at approach x, kept for the next call at the same x (a pass predicts the next pass's
+  // grid at the approach that pass then samples at).
+  bool centre_at(double x, GapMinimum& centre) const {
+    if (x != centre_cache_.approach_m) {
+      centre_cache_.approach_m = x;
+      centre_cache_.centre = ws_.minima[0];
+      centre_cache_.found = interpenetration_centre(centre_cache_.centre, x);
+    }
+    centre = centre_cache_.centre;
+    return centre_cache_.found;
   }
 
   // CONTACT's contact reference point (m_wr_locatecp step 5): the centre of the interpenetration region at the
@@ -1235,6 +1325,7 @@ class WheelCase {
       // the strips' points on the curved surface).
       out.contact_angle_rad = std::atan2(-force.lateral_N, force.vertical_N);
       out.y_cop_rail_m = weighted_y / ps.normal_force_N;
+      out.s_origin_y_rail_m = interpolate(p.gap.y_m, p.rail_y, 0.0);
     }
     result_.vertical_force_N += out.force_vertical_N;
     result_.patches.push_back(std::move(out));
@@ -1247,7 +1338,7 @@ class WheelCase {
       if (p.gap.y_m[i] >= ps.y_min_m && p.gap.y_m[i] <= ps.y_max_m &&
           (deepest == p.gap.size() || p.gap.h_m[i] < p.gap.h_m[deepest]))
         deepest = i;
-    const bool holds_reference = ps.y_min_m <= 0.0 && ps.y_max_m >= 0.0;
+    const bool holds_reference = ps.y_min_m <= p.reference_s && ps.y_max_m >= p.reference_s;
     GapMinimum point = p.reference;
     if (!holds_reference && deepest < p.gap.size()) {
       double s_guess = p.reference.wheel_s_m;
@@ -1272,7 +1363,7 @@ class WheelCase {
     if (is_success(status) && main != nullptr && main->solver && options_.method == NormalMethod::Mim1d) {
       warm_->push_back_to_earlier();  // the next shift extrapolates from this case and the one before
       main->solver->save_warm_start(main->solution, *warm_);
-      warm_->origin_y_m = main->y0;
+      warm_->origin_y_m = main->grid_origin_y();
       warm_->origin_angle_rad = main->angle;
       warm_->sampling_approach_m = main->gap_dz;
       warm_->same_contact = false;  // the next shift's contact
@@ -1301,6 +1392,12 @@ class WheelCase {
   WheelContactWorkspace::Impl& ws_;
   Mim1dWarmStart* warm_;     // in/out, or null: cold
   bool recentring_ = false;  // recentre_main_patch's re-solve: the gap passes keep its plane
+  struct CentreCache {
+    double approach_m = std::numeric_limits<double>::quiet_NaN();
+    GapMinimum centre;
+    bool found = false;
+  };
+  mutable CentreCache centre_cache_;  // centre_at's last centre
   PatchBuilder builder_;
   WheelContact result_;
   std::string detail_;  // why the case failed (empty while it has not)

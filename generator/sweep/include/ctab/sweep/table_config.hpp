@@ -60,7 +60,7 @@ struct TableConfig {
   //! (WheelRailOptions::reference_angle).
   std::optional<ReferenceAngle> reference_angle;
   //! [solver] surface: "planar" (the default) or "conformal" (WheelRailOptions::surface).
-  ContactSurface surface = ContactSurface::Planar;
+  ContactSurface surface = ContactSurface::Conformal;
   //! [solver] warm_start: each MIM-1D solve starts from its neighbour in dy, in fixed chains of rows
   //! (table_generator.hpp, warm_start_previous_rows); entries then agree with cold starts within the solver
   //! tolerance instead of bit for bit, and stay bit-identical across threads, shards and MPI ranks.

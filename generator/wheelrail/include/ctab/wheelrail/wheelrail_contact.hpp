@@ -27,6 +27,7 @@
 //! direction of the resultant, and the centre of pressure is sum N_i y_i / sum N_i over the strips' surface points.
 #include <cstdint>
 #include <memory>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,9 @@ struct ContactPatch {
   double rolling_radius_m = 0.0;        //!< rolling radius at the reference point [m]
   double y_cop_rail_m = 0.0;            //!< centre of pressure on the rail (conformal: CONTACT's y_cop_rail) [m]
   double s_min_m = 0.0, s_max_m = 0.0;  //!< lateral extent of the loaded strips in the plane [m]
+  //! Rail y of s = 0 [m]: conformal, the surface point's (the strip grid's centre, CONTACT's reference point at the
+  //! first sampling approach); NaN on a plane (s = 0 is where the plane touches the rail).
+  double s_origin_y_rail_m = std::numeric_limits<double>::quiet_NaN();
   std::vector<PatchStrip> strips;
 };
 

@@ -69,7 +69,7 @@ struct WheelRailOptions {
   }
   //! Contact surface (config [solver] surface, CLI --surface): planar (the default) or conformal (CONTACT's
   //! conformal approach, D = 4; README "Flange and flank").
-  ContactSurface surface = ContactSurface::Planar;
+  ContactSurface surface = ContactSurface::Conformal;
   //! bem2d's element placement in the patch frame (bem2d_options.hpp). CentresAtOrigin is CONTACT's wheel-rail grid
   //! (rows at s = k ds from the reference point, an element at x = 0); with CONTACT's reference point it is the
   //! like-for-like comparison with CONTACT (bem2d_wheelrail_test). Tables and `ctab bench accuracy` (at ctab's
