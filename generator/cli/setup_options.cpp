@@ -181,8 +181,8 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
             ->default_str(std::string(gen::kReferenceAngleMean)));
     add(app.add_option_function<std::string>(
                "--surface", [&c](const std::string& name) { c.surface = *gen::parse_contact_surface(name); },
-               "contact surface of a patch: planar (one plane) or conformal (curved surface midway between the "
-               "profiles, one normal per strip; README \"Flange and flank\")")
+               "contact surface of a patch: conformal (curved surface midway between the profiles, one normal per "
+               "strip, CONTACT's conformal approach) or planar (one plane; README \"Flange and flank\")")
             ->check(CLI::IsMember({std::string(gen::kSurfacePlanar), std::string(gen::kSurfaceConformal)}))
             ->default_str(std::string(gen::surface_name(c.surface))));
   }

@@ -116,11 +116,6 @@ class LookupAccuracy : public ::testing::Test {
         if (!present) continue;
         errors.force.add(std::fabs(r.patch[s].q[CTAB_NORMAL_FORCE_N] / direct.patch.normal_force_N[s] - 1.0), dy);
         errors.area.add(std::fabs(r.patch[s].q[CTAB_AREA_M2] / direct.patch.area_m2[s] - 1.0), dy);
-        if (&errors == &out.tread_only)
-          std::fprintf(stderr, "PT %d %g %g %g %g\n", int(mode), dy,
-                       std::fabs(r.patch[s].q[CTAB_Y_WHEEL_M] - direct.patch.y_wheel_m[s]),
-                       std::fabs(r.patch[s].q[CTAB_Y_RAIL_M] - direct.patch.y_rail_m[s]),
-                       std::fabs(r.patch[s].q[CTAB_Y_COP_RAIL_M] - direct.patch.y_cop_rail_m[s]));
         errors.point.add(std::max({std::fabs(r.patch[s].q[CTAB_Y_WHEEL_M] - direct.patch.y_wheel_m[s]),
                                    std::fabs(r.patch[s].q[CTAB_Y_RAIL_M] - direct.patch.y_rail_m[s]),
                                    std::fabs(r.patch[s].q[CTAB_Y_COP_RAIL_M] - direct.patch.y_cop_rail_m[s])}),

@@ -59,7 +59,7 @@ struct TableConfig {
   //! [solver] reference_angle: "tangent" or "interpenetration-mean" (CONTACT's); absent: the reference point's own
   //! (WheelRailOptions::reference_angle).
   std::optional<ReferenceAngle> reference_angle;
-  //! [solver] surface: "planar" (the default) or "conformal" (WheelRailOptions::surface).
+  //! [solver] surface: "conformal" (the default) or "planar" (WheelRailOptions::surface).
   ContactSurface surface = ContactSurface::Conformal;
   //! [solver] warm_start: each MIM-1D solve starts from its neighbour in dy, in fixed chains of rows
   //! (table_generator.hpp, warm_start_previous_rows); entries then agree with cold starts within the solver

@@ -52,8 +52,9 @@ struct WheelRailOptions {
   //! region spanning tread and flange root is one plane, as CONTACT combines them); it meets CONTACT's reference
   //! angle within 0.012 deg (flange_reference_test). On the flange flank (rail arc against the straight 70 deg wheel
   //! flank) the deepest point stays where the rail slope is -70 deg (-69.99 deg for every dy 6.7-7.6 mm, CONTACT
-  //! -68.6 to -69.4 deg); on a flat tread it sits up to 3 mm from the centre (0.6 deg at dy 0). Not yet the default
-  //! (README "Flange and flank": what switching it moves).
+  //! -68.6 to -69.4 deg); on a flat tread it sits up to 3 mm from the centre (0.6 deg at dy 0). Not the default
+  //! (README "Flange and flank": what switching it moves); the conformal surface at the deepest point (the default)
+  //! centres its strips on this centre and keeps the deepest point as the contact point.
   bool reference_at_interpenetration_centre = false;
   //! Reference angle (config [solver] reference_angle, CLI --reference-angle); unset: InterpenetrationMean, CONTACT's
   //! reference angle (the default since the seventh session; Tangent with CONTACT's centre is invalid input).
@@ -67,8 +68,10 @@ struct WheelRailOptions {
   [[nodiscard]] bool interpenetration_mean_angle() const noexcept {
     return reference_at_interpenetration_centre || reference_angle != ReferenceAngle::Tangent;
   }
-  //! Contact surface (config [solver] surface, CLI --surface): planar (the default) or conformal (CONTACT's
-  //! conformal approach, D = 4; README "Flange and flank").
+  //! Contact surface (config [solver] surface, CLI --surface): conformal (the default since the eleventh session:
+  //! CONTACT's conformal approach, D = 4, its strips centred on CONTACT's reference point; every CONTACT flange case
+  //! within issue 8's targets) or planar (one plane per patch, 1.3-1.4x cheaper per table; README "Flange and
+  //! flank").
   ContactSurface surface = ContactSurface::Conformal;
   //! bem2d's element placement in the patch frame (bem2d_options.hpp). CentresAtOrigin is CONTACT's wheel-rail grid
   //! (rows at s = k ds from the reference point, an element at x = 0); with CONTACT's reference point it is the
