@@ -1019,12 +1019,12 @@ class WheelCase {
   // the whole load solve was repeated at each new centre (2.2x the CPU of the deepest point on the default table).
   // With CONTACT's reference angle at the deepest point only the plane's inclination follows: the passes then settle
   // the approach alone (a plane's gap is the same through any of its points; the point places the strip grid).
-  // The conformal surface at the deepest point centres its strip grid on the centre at the first sampling approach
-  // (CONTACT's grid: its strip k is CONTACT's row k wherever the first approach is close to the solved one) and keeps
-  // it through the passes: its surface does not depend on the point it is marched from, so the point only places the
-  // grid, and a grid that moves with every pass (CONTACT's rule) cost 1.5x the strip-solver iterations on the
-  // default table (3824 against 2592). From the deepest point's own grid the flank's p0 profile was 9.8 % RMS off
-  // CONTACT's rows (dy 7.5 mm, vertical load; target 5 %).
+  // The conformal surface at the deepest point centres its strip grid on the centre at each pass's sampling approach
+  // (CONTACT's grid: its strip k is CONTACT's row k) and keeps the deepest point as the contact point: its surface
+  // does not depend on the point it is marched from, so the point only places the grid. From the deepest point's own
+  // grid the flank's p0 profile was 9.8 % RMS off CONTACT's rows (dy 7.5 mm, vertical load; target 5 %). Centred once,
+  // at the first sampling approach, the grid depended on the path (a load solve and an approach solve at its settled
+  // approach 2.5e-3 of the load apart at dy 5.2 mm, gap_passes_test); shift_pass_start moves the warm start with it.
   void follow_interpenetration_centre(PatchProblem& main) const {
     if (!follows_centre()) return;
     GapMinimum centre;

@@ -66,7 +66,7 @@ struct ContactPatch {
   double y_cop_rail_m = 0.0;            //!< centre of pressure on the rail (conformal: CONTACT's y_cop_rail) [m]
   double s_min_m = 0.0, s_max_m = 0.0;  //!< lateral extent of the loaded strips in the plane [m]
   //! Rail y of s = 0 [m]: conformal, the surface point's (the strip grid's centre, CONTACT's reference point at the
-  //! first sampling approach); NaN on a plane (s = 0 is where the plane touches the rail).
+  //! settled approach); NaN on a plane (s = 0 is where the plane touches the rail).
   double s_origin_y_rail_m = std::numeric_limits<double>::quiet_NaN();
   std::vector<PatchStrip> strips;
 };
