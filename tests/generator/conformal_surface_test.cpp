@@ -121,7 +121,9 @@ TEST(StripPlacement, FollowsContactsGridWithItsReferenceRule) {
           if (conformal && std::abs(s.s_m) < 1e-9) {
             at_reference = true;
             EXPECT_NEAR(s.y_rail_m, main.s_origin_y_rail_m, 1e-9) << where;
-            if (contacts_rule) EXPECT_NEAR(s.y_rail_m, main.y_rail_m, 1e-9) << where;
+            if (contacts_rule) {
+              EXPECT_NEAR(s.y_rail_m, main.y_rail_m, 1e-9) << where;
+            }
           }
         }
         if (conformal) {

@@ -157,8 +157,11 @@ TEST(Convergence, TinyApproachIsNoContactOnWheelRailAsOnAGapFile) {
         for (const CaseWheel& wheel : solved.wheels) {
           EXPECT_EQ(wheel.contact.status, centred ? SolveStatus::UnderResolved : SolveStatus::NoContact)
               << surface << " " << mode << " dy " << dy_mm << ": " << wheel.contact.detail;
-          if (centred) EXPECT_LT(wheel.contact.normal_force_N, kOneStripLoad_N) << mode << " dy " << dy_mm;
-          else EXPECT_EQ(wheel.contact.normal_force_N, 0.0) << mode << " dy " << dy_mm;
+          if (centred) {
+            EXPECT_LT(wheel.contact.normal_force_N, kOneStripLoad_N) << mode << " dy " << dy_mm;
+          } else {
+            EXPECT_EQ(wheel.contact.normal_force_N, 0.0) << mode << " dy " << dy_mm;
+          }
         }
       }
     }

@@ -269,8 +269,9 @@ double identity_residual(const Table& table, bool vertical) {
             EXPECT_NEAR(std::hypot(lateral, vertical_N), normal, 1e-12 * normal);
           } else {  // the resultant of the strips' own normals: no larger than their sum, along contact_angle_rad
             EXPECT_LE(std::hypot(lateral, vertical_N), normal * (1.0 + 1e-12));
-            if (table.patch.present[k])
+            if (table.patch.present[k]) {
               EXPECT_NEAR(-std::atan2(lateral, vertical_N), table.patch.contact_angle_rad[k], 1e-12);
+            }
           }
         }
         worst = std::max(worst, std::abs(sum - table.second_axis[j]) / table.second_axis[j]);
@@ -368,9 +369,10 @@ TEST(Table, FlangeForcePushesTheRailToTheFieldSide) {
       const std::size_t q = table.patch_index(2, 0, 0, slot);
       if (!table.patch.present[q]) continue;
       const ProfilePoint at = rail.at(table.patch.s_origin_y_rail_m[q]);
-      if (tangent || centre)
+      if (tangent || centre) {
         EXPECT_NEAR(std::atan(at.dz), table.patch.plane_angle_rad[q], tangent ? 1e-9 : 0.4 * std::numbers::pi / 180.0)
             << rule << " slot " << slot;
+      }
       EXPECT_DOUBLE_EQ(at.z, table.patch.s_origin_z_rail_m[q]) << rule;
     }
     if (!conformal) (centre ? centres_angle : contacts_angle) = table.patch.plane_angle_rad[k];
