@@ -181,13 +181,35 @@ struct NormalLine {
   double y = 0, z = 0, c = 1, sn = 0;
 };
 
-// y at `at`, linear in the increasing x (extrapolated from the end segments).
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  const auto upper = std::upper_bound(x.begin(), x.end(), at);
-  const std::size_t i = std::clamp<std::size_t>(static_cast<std::size_t>(upper - x.begin()), 1, x.size() - 1);
+// y between x[i - 1] and x[i], linear.
+double interpolate_in(const std::vector<double>& x, const std::vector<double>& y, std::size_t upper, double at) {
+  const std::size_t i = std::clamp<std::size_t>(upper, 1, x.size() - 1);
   const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
   return (1 - t) * y[i - 1] + t * y[i];
 }
+
+// y at `at`, linear in the increasing x (extrapolated from the end segments).
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  return interpolate_in(x, y, static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), at) - x.begin()), at);
+}
+
+// interpolate() at non-decreasing positions (a strip grid's centres), its segment search walked on from the last
+// query instead of a binary search per query: the same values.
+class ForwardInterpolation {
+ public:
+  ForwardInterpolation(const std::vector<double>& x, const std::vector<double>& y) : x_(x), y_(y) {}
+  double operator()(double at) {
+    if (upper_ > 0 && x_[upper_ - 1] > at)
+      upper_ = static_cast<std::size_t>(std::upper_bound(x_.begin(), x_.end(), at) - x_.begin());
+    while (upper_ < x_.size() && x_[upper_] <= at) ++upper_;
+    return interpolate_in(x_, y_, upper_, at);
+  }
+
+ private:
+  const std::vector<double>& x_;
+  const std::vector<double>& y_;
+  std::size_t upper_ = 0;  // the first x beyond the last query
+};
 
 class PatchBuilder {
  public:
@@ -244,6 +266,10 @@ class PatchBuilder {
     double turn_before = 0;  // conformal: the same one sample earlier [rad]
     int turns = 0;           // conformal: samples with a turn so far
     double rail_slope = 0;   // the rail's slope dz/dy where the last intersection met it [-]
+    double angle = 0;        // conformal: the inclination of line's normal, atan2(line.sn, line.c) [rad]
+    // conformal: the rail at the last surface point's own y (midway), for the sample's strip geometry
+    ProfilePoint rail_at_point;
+    double rail_at_point_y = std::numeric_limits<double>::quiet_NaN();
   };
 
   static std::vector<std::vector<double>*> columns(PatchProblem& p) {
@@ -319,7 +345,7 @@ class PatchBuilder {
   // mean of the two profile inclinations there (CONTACT's averaged normal).
   bool conformal_sample(const PatchProblem& p, double ds, SampleState& state, Sample& out) const {
     NormalLine line = state.line;
-    const double last_angle = std::atan2(line.sn, line.c);
+    const double last_angle = state.angle;
     // The turn extrapolated linearly from the last two turns: the second corrector pass then moves the point by
     // 1e-14 to 1e-15 m in most samples, 1e-12 to 1e-13 m with the last turn repeated (conformal default table).
     const double next_turn = state.turns >= 2 ? 2.0 * state.turn - state.turn_before : state.turn;
@@ -339,6 +365,7 @@ class PatchBuilder {
     state.line = line;
     out.y_rail = line.y;  // the surface point's rail y (CONTACT's y_rail of a row)
     out.angle = std::atan2(line.sn, line.c);
+    state.angle = out.angle;
     if (ds != 0.0) {
       state.turn_before = state.turn;
       state.turn = out.angle - last_angle;
@@ -355,6 +382,7 @@ class PatchBuilder {
     double last_turn = 0.0;
     if (!settle_midway(state.line, p.gap_dz, state, w, last_turn)) return false;
     state.s = 0.0;
+    state.angle = std::atan2(state.line.sn, state.line.c);
     return true;
   }
 
@@ -426,7 +454,9 @@ class PatchBuilder {
     state.n_rail -= mid;
     state.n_wheel -= mid;
     // The mean inclination's direction bisects the two profiles' unit tangents (1, slope) / |(1, slope)|.
-    const double rail_slope = side_.rail().at(line.y).dz, wheel_slope = wheel_at(line.y, state.s_at_y).slope;
+    state.rail_at_point = side_.rail().at(line.y);
+    state.rail_at_point_y = line.y;
+    const double rail_slope = state.rail_at_point.dz, wheel_slope = wheel_at(line.y, state.s_at_y).slope;
     const double rail_c = 1.0 / std::sqrt(1.0 + rail_slope * rail_slope),
                  wheel_c = 1.0 / std::sqrt(1.0 + wheel_slope * wheel_slope);
     const double c = rail_c + wheel_c, sn = rail_slope * rail_c + wheel_slope * wheel_c;
@@ -440,7 +470,8 @@ class PatchBuilder {
   // `line` is the sample's normal (c, sn: cosine and sine of out.angle).
   void fill_strip_geometry(const WheelSurfacePoint& w, const SampleState& state, const NormalLine& line,
                            Sample& out) const {
-    const ProfilePoint r = side_.rail().at(out.y_rail);
+    // conformal: the rail at the surface point's own y, as the last corrector pass evaluated it
+    const ProfilePoint r = out.y_rail == state.rail_at_point_y ? state.rail_at_point : side_.rail().at(out.y_rail);
     // Lateral relative curvature seen along the line's lateral direction: each surface's n'' = kappa (1 + n'^2)^(3/2)
     // with n' its slope relative to the line's tangent. Planar, this is exactly h''/2 (the plane is straight);
     // conformal, n is an offset from the curved surface, whose own curvature kappa_m adds to both surfaces' n''
@@ -448,7 +479,7 @@ class PatchBuilder {
     // relative curvature is the difference of the two profile curvatures, not h'' of a flat plane.
     const double tr = relative_slope(line, r.dz), tw = relative_slope(line, w.slope);
     const double gr = 1 + tr * tr, gw = 1 + tw * tw;
-    out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature * gw * std::sqrt(gw));
+    out.B = 0.5 * (r.curvature() * gr * std::sqrt(gr) - w.curvature() * gw * std::sqrt(gw));
     out.h = state.n_rail - state.n_wheel;
     out.weight = 1.0 / (line.c + w.slope * line.sn);  // dn_wheel / dz
     // Along x the wheel (a surface of revolution about the lateral axis) rises vertically by x^2 / (2 r), r its radius
@@ -513,7 +544,7 @@ double expected_approach(const SideGeometry& side, const GapMinimum& m, double d
   if (load == LoadKind::Approach) return value * c;
   const WheelSurfacePoint w = side.wheel_point(m.wheel_s_m, dy, roll);
   const double A = c / (2.0 * w.radius_m);
-  const double B = std::max(0.5 * (side.rail().at(m.rail_y_m).curvature() - w.curvature), A / kCurvatureRatioLimit);
+  const double B = std::max(0.5 * (side.rail().at(m.rail_y_m).curvature() - w.curvature()), A / kCurvatureRatioLimit);
   const double force = load == LoadKind::VerticalForce ? value / std::max(c, kCosineFloor) : value;
   const HertzContact h = hertz_from_load(A, B, E_star, force);
   return h.status == SolveStatus::Converged ? h.approach_m : kFallbackApproach_m;
@@ -893,8 +924,8 @@ class WheelCase {
   static void fill_strip_gap_rate(PatchProblem& p, double dx) {
     const StripGrid& grid = p.solver->grid();
     p.strip_gap_rate.resize(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i)
-      p.strip_gap_rate[i] = dx * (p.c - interpolate(p.gap.y_m, p.approach_weight, grid.y_m[i]));
+    ForwardInterpolation weight(p.gap.y_m, p.approach_weight);
+    for (std::size_t i = 0; i < grid.size(); ++i) p.strip_gap_rate[i] = dx * (p.c - weight(grid.y_m[i]));
   }
 
   // The next pass's warm start: the last solve moved to first order to the next sampling approach (x + dx) and
@@ -923,9 +954,8 @@ class WheelCase {
     const double ds = interpolate(p.rail_y, p.gap.y_m, next_origin_y) - interpolate(p.rail_y, p.gap.y_m, from_y);
     const StripGrid& grid = p.solver->grid();
     if (!(std::abs(ds) < kPredictedGridMove * grid.strip_width_m)) return false;
-    for (std::size_t i = 0; i < grid.size(); ++i)
-      p.strip_gap_rate[i] +=
-          interpolate(p.gap.y_m, p.gap.h_m, grid.y_m[i] + ds) - interpolate(p.gap.y_m, p.gap.h_m, grid.y_m[i]);
+    ForwardInterpolation moved(p.gap.y_m, p.gap.h_m), here(p.gap.y_m, p.gap.h_m);
+    for (std::size_t i = 0; i < grid.size(); ++i) p.strip_gap_rate[i] += moved(grid.y_m[i] + ds) - here(grid.y_m[i]);
     return true;
   }
 
@@ -996,8 +1026,9 @@ class WheelCase {
   bool set_vertical_load_weights(PatchProblem& main) {
     const StripGrid& grid = main.solver->grid();
     main.load_weight.resize(grid.size());
+    ForwardInterpolation normal_angle(main.gap.y_m, main.normal_angle);
     for (std::size_t i = 0; i < grid.size(); ++i) {
-      main.load_weight[i] = std::cos(interpolate(main.gap.y_m, main.normal_angle, grid.y_m[i]));
+      main.load_weight[i] = std::cos(normal_angle(grid.y_m[i]));
       if (!(main.load_weight[i] > kCosineFloor)) return false;
     }
     main.solver->set_load_weights(main.load_weight);

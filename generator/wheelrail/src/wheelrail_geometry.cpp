@@ -64,8 +64,8 @@ WheelSurfacePoint SideGeometry::wheel_point(double s_m, double dy_m, double c, d
   p.z_m = yl * sn + zl * c;
   const double dy_ds = c - f.dz * sn, dz_ds = sn + f.dz * c;
   p.slope = dz_ds / dy_ds;
-  p.curvature = f.curvature();  // invariant under the rigid motion
   p.radius_m = zl;
+  p.profile = f;
   return p;
 }
 

@@ -37,11 +37,14 @@ struct GapMinimum {
 
 //! The wheel surface point at S in the side frame with z_ws = 0, and its rail coordinate.
 struct WheelSurfacePoint {
-  double rail_y_m = 0.0;   //!< lateral position in rail coordinates [m]
-  double z_m = 0.0;        //!< height (down) in the track frame, z_ws = 0 [m]
-  double slope = 0.0;      //!< dz/dy of the wheel surface in the track frame [-]
-  double curvature = 0.0;  //!< signed curvature of the wheel surface (as ProfilePoint::curvature) [1/m]
-  double radius_m = 0.0;   //!< r_nom + F(S) [m]
+  double rail_y_m = 0.0;  //!< lateral position in rail coordinates [m]
+  double z_m = 0.0;       //!< height (down) in the track frame, z_ws = 0 [m]
+  double slope = 0.0;     //!< dz/dy of the wheel surface in the track frame [-]
+  double radius_m = 0.0;  //!< r_nom + F(S) [m]
+  ProfilePoint profile;   //!< the wheel profile at S (its own frame)
+  //! Signed curvature of the wheel surface (as ProfilePoint::curvature, invariant under the rigid motion) [1/m]; on
+  //! demand: the contact searches' Newton steps evaluate many wheel points and need it at few.
+  [[nodiscard]] double curvature() const { return profile.curvature(); }
 };
 
 //! Derivative bounds of a profile's cubic per block of kBlock intervals, for range queries (the gap scans' error
