@@ -30,7 +30,7 @@ double ProfilePoint::curvature() const {
 }
 
 ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string name)
-    : name_(std::move(name)), step_(step_m) {
+    : name_(std::move(name)), step_(step_m), inverse_step_(1.0 / step_m) {
   const double t0 = curve.t_begin(), t1 = curve.t_end();
   const CurvePoint first = curve.at(t0), last = curve.at(t1);
   if (!(last.y > first.y)) throw InputError(name_, 0, "profile must extend in +y");
@@ -77,7 +77,7 @@ ProfileTable::ProfileTable(const ProfileCurve& curve, double step_m, std::string
 }
 
 ProfilePoint ProfileTable::at(double y) const noexcept {
-  const double u = std::clamp((y - y0_) / step_, 0.0, static_cast<double>(z_.size() - 1));
+  const double u = std::clamp((y - y0_) * inverse_step_, 0.0, static_cast<double>(z_.size() - 1));
   const auto k = std::min(static_cast<std::size_t>(u), z_.size() - 2);
   const double s = u - static_cast<double>(k);
   const double h = step_;
@@ -85,7 +85,8 @@ ProfilePoint ProfileTable::at(double y) const noexcept {
   const double s2 = s * s, s3 = s2 * s;
   ProfilePoint p;
   p.z = (2 * s3 - 3 * s2 + 1) * z0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * z1 + (s3 - s2) * m1;
-  p.dz = ((6 * s2 - 6 * s) * z0 + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * z1 + (3 * s2 - 2 * s) * m1) / h;
+  p.dz = ((6 * s2 - 6 * s) * z0 + (3 * s2 - 4 * s + 1) * m0 + (-6 * s2 + 6 * s) * z1 + (3 * s2 - 2 * s) * m1) *
+         inverse_step_;
   p.d2z = (1 - s) * d2z_[k] + s * d2z_[k + 1];
   return p;
 }
