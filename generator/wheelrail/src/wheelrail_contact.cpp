@@ -157,6 +157,10 @@ struct PatchProblem {
   NormalSolution solution;
 
   [[nodiscard]] double grid_origin_y() const { return std::isnan(origin_y) ? y0 : origin_y; }
+  //! Whether rail y lies strictly inside the sampled window (between the first and last samples' rail y).
+  [[nodiscard]] bool window_holds(double y) const {
+    return rail_y.size() >= 2 && y > rail_y.front() && y < rail_y.back();
+  }
 };
 
 // Creates the patch's MIM-1D solver, or re-targets the one it already has. Returns an empty string, or why not.
@@ -331,12 +335,11 @@ class PatchBuilder {
   // along the surface: the strips sat 2/3 of a row off CONTACT's.
   static void start_arc_length_at_origin(PatchProblem& p) {
     p.reference_s = 0.0;
-    const auto inside = [&p](double y) { return p.rail_y.size() >= 2 && y > p.rail_y.front() && y < p.rail_y.back(); };
-    const double origin_y = inside(p.grid_origin_y()) ? p.grid_origin_y() : p.y0;
-    if (!inside(origin_y)) return;
+    const double origin_y = p.window_holds(p.grid_origin_y()) ? p.grid_origin_y() : p.y0;
+    if (!p.window_holds(origin_y)) return;
     const double origin = interpolate(p.rail_y, p.gap.y_m, origin_y);
     for (double& s : p.gap.y_m) s -= origin;
-    if (origin_y != p.y0 && inside(p.y0)) p.reference_s = interpolate(p.rail_y, p.gap.y_m, p.y0);
+    if (origin_y != p.y0 && p.window_holds(p.y0)) p.reference_s = interpolate(p.rail_y, p.gap.y_m, p.y0);
   }
 
   // Conformal: the reference surface point at arc length s_prev + ds (ds = 0: the reference point itself), by a
@@ -948,9 +951,8 @@ class WheelCase {
   // move or moves too far for the first order.
   bool add_grid_move(PatchProblem& p, double next_origin_y) const {
     const double from_y = p.grid_origin_y();
-    if (!std::isfinite(next_origin_y) || next_origin_y == from_y || p.rail_y.size() < 2) return false;
-    const auto inside = [&p](double y) { return y > p.rail_y.front() && y < p.rail_y.back(); };
-    if (!inside(from_y) || !inside(next_origin_y)) return false;
+    if (!std::isfinite(next_origin_y) || next_origin_y == from_y) return false;
+    if (!p.window_holds(from_y) || !p.window_holds(next_origin_y)) return false;
     const double ds = interpolate(p.rail_y, p.gap.y_m, next_origin_y) - interpolate(p.rail_y, p.gap.y_m, from_y);
     const StripGrid& grid = p.solver->grid();
     if (!(std::abs(ds) < kPredictedGridMove * grid.strip_width_m)) return false;
@@ -963,7 +965,7 @@ class WheelCase {
   // else the present one.
   double next_grid_origin(const PatchProblem& p, double x) const {
     GapMinimum centre;
-    if (!follows_centre() || !centres_conformal_grid() || !centre_at(x, centre)) return p.origin_y;
+    if (!centres_conformal_grid() || !centre_at(x, centre)) return p.origin_y;
     return centre.rail_y_m;
   }
 
