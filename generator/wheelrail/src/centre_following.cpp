@@ -2,9 +2,7 @@
 
 namespace ctab::gen {
 
-ShiftedSide shifted_side(const WheelCase& c) {
-  return {c.side, c.dy_m, c.roll_rad, c.result.first_contact_z_m};
-}
+ShiftedSide shifted_side(const WheelCase& c) { return {c.side, c.dy_m, c.roll_rad, c.result.first_contact_z_m}; }
 
 bool follows_centre(const WheelCase& c) {
   return !c.options.prescribed_reference && !c.recentring &&

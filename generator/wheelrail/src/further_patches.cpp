@@ -61,9 +61,10 @@ SolveStatus solve_further_patches(WheelCase& c) {
   }
   auto mismatch = [&](double dz) { return load_at(c, dz) - c.load_value; };
   const double hi = c.result.vertical_approach_m;
-  const RootResult root = find_root_bracketed(
-      mismatch, 0.0, -c.load_value, hi, mismatch(hi), tuning::kSharedApproachTolerance_m,
-      c.options.mim1d.tolerance * c.load_value * tuning::kSharedForceToleranceFactor, tuning::kSharedApproachIterations);
+  const RootResult root =
+      find_root_bracketed(mismatch, 0.0, -c.load_value, hi, mismatch(hi), tuning::kSharedApproachTolerance_m,
+                          c.options.mim1d.tolerance * c.load_value * tuning::kSharedForceToleranceFactor,
+                          tuning::kSharedApproachIterations);
   if (!root.converged) {
     c.detail = "the vertical approach shared by " + std::to_string(c.ws.used) + " patches did not converge in " +
                std::to_string(tuning::kSharedApproachIterations) + " root-finding steps";

@@ -222,7 +222,7 @@ class GapPasses {
   double settled_force_ = 0.0, settled_vertical_ = 0.0;  // the last pass with x settled: force and vertical load
   double previous_angle_ = 0.0;                          // the plane's angle at the last pass [rad]
   int retries_ = 0;                                      // strip solves retried halfway back
-  bool held_ = false;  // the last pass held x: its gap is still the one sampled
+  bool held_ = false;                                    // the last pass held x: its gap is still the one sampled
 };
 
 }  // namespace

@@ -8,8 +8,7 @@
 namespace ctab::gen {
 
 //! y between x[upper - 1] and x[upper] (upper clamped to [1, size - 1]), linear.
-inline double interpolate_in(const std::vector<double>& x, const std::vector<double>& y, std::size_t upper,
-                             double at) {
+inline double interpolate_in(const std::vector<double>& x, const std::vector<double>& y, std::size_t upper, double at) {
   const std::size_t i = std::clamp<std::size_t>(upper, 1, x.size() - 1);
   const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
   return (1 - t) * y[i - 1] + t * y[i];

@@ -78,8 +78,8 @@ void solve_main_once(WheelCase& c, PatchProblem& main, double force, bool from_p
     static const Mim1dWarmStart cold;
     // Where the conformal grid follows the centre the chain's start is moved onto this case's grid: a neighbour's
     // centre lies up to a strip away from the one at this case's first sampling approach.
-    const Mim1dWarmStart& start = from_previous_pass                ? start_on_grid(c, c.ws.pass_start, main)
-                                  : c.warm == nullptr               ? cold
+    const Mim1dWarmStart& start = from_previous_pass                  ? start_on_grid(c, c.ws.pass_start, main)
+                                  : c.warm == nullptr                 ? cold
                                   : centres_conformal_grid(c.options) ? start_on_grid(c, c.ws.chain_start, main)
                                                                       : c.ws.chain_start;
     main.solution = early_stop != nullptr ? main.solver->solve_for_load(force, start, tolerance, *early_stop)

@@ -127,8 +127,7 @@ bool PatchBuilder::conformal_sample(const PatchProblem& p, double ds, SampleStat
   WheelSurfacePoint w{};
   double last_turn = 0.0;
   if (!settle_midway(line, p.gap_dz, state, w, last_turn)) return false;
-  if (last_turn >= kFirstOrderTurn_rad && !intersect(line, p.gap_dz, state, w))
-    return false;  // along the final normal
+  if (last_turn >= kFirstOrderTurn_rad && !intersect(line, p.gap_dz, state, w)) return false;  // along the final normal
   const double chord = std::hypot(line.y - state.line.y, line.z - state.line.z);
   out.s = state.s + (ds < 0 ? -chord : chord);
   state.s = out.s;
@@ -158,7 +157,8 @@ bool PatchBuilder::centre_on_surface(const PatchProblem& p, SampleState& state) 
 
 // Corrector passes (midway) until the point and its normal stand still (kSurfaceMove_m, kSurfaceTurn_rad);
 // `last_turn`: how far the last pass turned the normal [rad].
-bool PatchBuilder::settle_midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w, double& last_turn) const {
+bool PatchBuilder::settle_midway(NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w,
+                                 double& last_turn) const {
   double previous_move = 0.0, previous_turn = 0.0;
   NormalLine before;
   double signed_turn = 0.0;
@@ -191,14 +191,16 @@ bool PatchBuilder::settle_midway(NormalLine& line, double dz, SampleState& state
 // after a large turn (the first pass from the rail point turns by about 1e-2 rad).
 // `line`: the line before the turn, at whose intersections `state` and `w` hold the slopes. (The turn that such a
 // move causes, curvature x move, is below 1e-10 rad.)
-double PatchBuilder::next_move(const NormalLine& line, const SampleState& state, const WheelSurfacePoint& w, double turn) {
+double PatchBuilder::next_move(const NormalLine& line, const SampleState& state, const WheelSurfacePoint& w,
+                               double turn) {
   const double h = std::abs(state.n_rail - state.n_wheel);
   return 0.25 * turn * h * (std::abs(relative_slope(line, w.slope) - relative_slope(line, state.rail_slope)) + turn);
 }
 
 // The intersections after the line turned by theta about its point (first order, next_move): each n by -n t theta,
 // t the profile's slope relative to the line before the turn.
-void PatchBuilder::turn_intersections(const NormalLine& line, SampleState& state, const WheelSurfacePoint& w, double theta) {
+void PatchBuilder::turn_intersections(const NormalLine& line, SampleState& state, const WheelSurfacePoint& w,
+                                      double theta) {
   state.n_rail -= state.n_rail * relative_slope(line, state.rail_slope) * theta;
   state.n_wheel -= state.n_wheel * relative_slope(line, w.slope) * theta;
 }
@@ -238,7 +240,7 @@ bool PatchBuilder::midway(NormalLine& line, double dz, SampleState& state, Wheel
 // Separation h (state.n_rail - state.n_wheel) along the line, A and B of the strip there (with the line's angle).
 // `line` is the sample's normal (c, sn: cosine and sine of out.angle).
 void PatchBuilder::fill_strip_geometry(const WheelSurfacePoint& w, const SampleState& state, const NormalLine& line,
-                         Sample& out) const {
+                                       Sample& out) const {
   // conformal: the rail at the surface point's own y, as the last corrector pass evaluated it
   const ProfilePoint r = out.y_rail == state.rail_at_point_y ? state.rail_at_point : side_.rail().at(out.y_rail);
   // Lateral relative curvature seen along the line's lateral direction: each surface's n'' = kappa (1 + n'^2)^(3/2)
@@ -298,6 +300,5 @@ bool PatchBuilder::intersect_wheel(const NormalLine& line, double dz, SampleStat
   }
   return side_.wheel().contains(state.s_guess);
 }
-
 
 }  // namespace ctab::gen

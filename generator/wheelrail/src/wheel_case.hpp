@@ -19,10 +19,10 @@ namespace ctab::gen {
 
 struct WheelContactWorkspace::Impl {
   std::vector<GapMinimum> minima;
-  std::vector<PatchProblem> pool;  // patch problems; the first `used` are this case's
-  Mim1dWarmStart pass_start;       // the main patch's previous pass (gap passes), when not warm-started
-  Mim1dWarmStart moved_start;      // pass_start moved onto a grid with another origin (start_on_grid)
-  Mim1dWarmStart chain_start;      // the chain's last two solves extrapolated (extrapolate_warm_start)
+  std::vector<PatchProblem> pool;            // patch problems; the first `used` are this case's
+  Mim1dWarmStart pass_start;                 // the main patch's previous pass (gap passes), when not warm-started
+  Mim1dWarmStart moved_start;                // pass_start moved onto a grid with another origin (start_on_grid)
+  Mim1dWarmStart chain_start;                // the chain's last two solves extrapolated (extrapolate_warm_start)
   std::unique_ptr<Mim1dSolver> other_width;  // resolve_at_strip_width's solver
   std::size_t used = 0;
   PatchProblem& acquire() {  // the pool is sized before use

@@ -94,8 +94,7 @@ SolveStatus solve_main_patch(WheelCase& c, double depth, const GapMinimum& refer
 // are secant steps on the fixed point c = C(c) (C: the centre at the approach solved in the plane at c): where one
 // region spans tread and flange root C has a slope near -1, where plain re-solves alternate between two centres.
 SolveStatus recentre_main_patch(WheelCase& c, double depth) {
-  if (!c.options.reference_at_interpenetration_centre || c.options.prescribed_reference)
-    return SolveStatus::Converged;
+  if (!c.options.reference_at_interpenetration_centre || c.options.prescribed_reference) return SolveStatus::Converged;
   GapMinimum previous_at{}, previous_centre{};
   for (int pass = 0; pass < kRecentrePasses; ++pass) {
     const GapMinimum at = c.ws.pool[0].reference;
@@ -164,8 +163,7 @@ void save_warm_start(WheelCase& c, SolveStatus status) {
 
 WheelContact finish(WheelCase& c, SolveStatus status, std::string detail = {}) {
   save_warm_start(c, status);
-  c.result.status =
-      resolution_status(status, c.options.method, patch_extents(c.result), c.options.mim1d.strip_width_m);
+  c.result.status = resolution_status(status, c.options.method, patch_extents(c.result), c.options.mim1d.strip_width_m);
   if (!is_success(status)) {
     c.result.patches.clear();
     c.result.detail = detail.empty() ? status_name(status) : std::move(detail);
@@ -182,8 +180,8 @@ WheelContact solve_case(WheelCase& c) {
   if (std::string why = invalid_input(c); !why.empty()) return finish(c, SolveStatus::InvalidInput, std::move(why));
   if (!find_rigid_contact(c))
     return finish(c, SolveStatus::InvalidInput,
-                  "the wheel does not reach the rail at dy = " + number_text(c.dy_m) + " m, roll = " +
-                      number_text(c.roll_rad) + " rad (lateral shift beyond the profiles)");
+                  "the wheel does not reach the rail at dy = " + number_text(c.dy_m) +
+                      " m, roll = " + number_text(c.roll_rad) + " rad (lateral shift beyond the profiles)");
   if (c.load_value == 0.0) {
     c.result.near_misses = c.ws.minima;
     return finish(c, SolveStatus::NoContact);

@@ -1,5 +1,5 @@
 #pragma once
-//! The least model (`--method auto --tolerance T`, README "The least model"): per wheel case the coarsest MIM-1D
+//! The least model (`--method auto --tolerance T`, docs/method.md): per wheel case the coarsest MIM-1D
 //! strip width whose estimated error in area and max pressure stays within T against MIM-1D at a fine width.
 //!
 //! Estimator (least_model_test):

@@ -115,7 +115,7 @@ class WheelContactWorkspace {
 //! before it, at the same step: warm_start.earlier, extrapolate_warm_start), which is then replaced by this case's
 //! main patch (cleared when the case failed), ready for the next shift. The result agrees with the cold solve within
 //! the solver tolerance (Mim1dOptions::tolerance), except where a two-point window holds two self-consistent strip
-//! sets and the chain stays on its neighbour's (README "Speed", warm start); it is a function of the inputs and
+//! sets and the chain stays on its neighbour's (docs/method.md, warm start); it is a function of the inputs and
 //! `warm_start` alone.
 [[nodiscard]] WheelContact solve_wheel_contact(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
                                                LoadKind load, double load_value, const WheelRailOptions& options,
