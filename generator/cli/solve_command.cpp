@@ -13,7 +13,7 @@
 #include "ctab/contact/normal_contact.hpp"
 #include "ctab/contact/strip_grid.hpp"
 #include "ctab/io/gap_csv.hpp"
-#include "ctab/io/solution_json.hpp"
+#include "solution_json.hpp"
 #include "exit_codes.hpp"
 #include "setup_options.hpp"
 #include "solve_output.hpp"

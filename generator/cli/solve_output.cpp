@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "ctab/io/solution_json.hpp"
+#include "solution_json.hpp"
 #include "table_case.hpp"
 
 namespace ctab::cli {

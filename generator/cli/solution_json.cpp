@@ -1,4 +1,4 @@
-#include "ctab/io/solution_json.hpp"
+#include "solution_json.hpp"
 
 namespace ctab::gen {
 
