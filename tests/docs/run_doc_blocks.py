@@ -34,6 +34,7 @@ BLOCK_TIMEOUT_S = 600
 class Block:
     def __init__(self, path, line, lang, text, mark):
         self.path, self.line, self.lang, self.text, self.mark = path, line, lang, text, mark
+        self.followed_by_text = False  # a ```text block follows, blank lines only between
         self.expected = []
 
 
