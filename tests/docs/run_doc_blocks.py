@@ -7,6 +7,8 @@ has one, with build/bin first on PATH. A ```text block that directly follows a `
 each appear in the block's output (stdout and stderr). An HTML comment on the line before a block's fence marks it:
   <!-- doc-test: slow -->     run only with --slow (CTest label slow)
   <!-- doc-test: mpi -->      run only when the build has MPI (--with-mpi ON)
+  <!-- doc-test: shared -->   run only when ../shared exists beside the source tree (as are blocks naming ../shared)
+Several marks are separated by spaces (<!-- doc-test: slow shared -->).
 The Quick start's `make run` and `make test` lines are not run here (they run CTest themselves); .ci/run runs them.
 Exit status 0 when every block ran with status 0 and printed its expected lines.
 
@@ -22,7 +24,7 @@ import tempfile
 import time
 
 FENCE = re.compile(r"^(`{3,})\s*([\w+-]*)\s*$")
-MARK = re.compile(r"^<!--\s*doc-test:\s*([\w-]+)\s*-->\s*$")
+MARK = re.compile(r"^<!--\s*doc-test:\s*([\w\s-]+?)\s*-->\s*$")
 SKIPPED_LINES = {
     "make run": "builds and runs the main job itself; .ci/run runs it before `make test`",
     "make test": "runs CTest, which runs this test (recursion); .ci/run runs it",
@@ -33,7 +35,8 @@ BLOCK_TIMEOUT_S = 600
 
 class Block:
     def __init__(self, path, line, lang, text, mark):
-        self.path, self.line, self.lang, self.text, self.mark = path, line, lang, text, mark
+        self.path, self.line, self.lang, self.text = path, line, lang, text
+        self.marks = set(mark.split()) if mark else set()
         self.followed_by_text = False  # a ```text block follows, blank lines only between
         self.expected = []
 
@@ -151,10 +154,14 @@ def main():
                 print(f"FAIL {where}: a ```{block.lang} block; commands go in ```sh blocks (run), output in ```text")
                 failed += 1
                 continue
-            if block.lang != "sh" or (block.mark == "slow") != args.slow:
+            if block.lang != "sh" or ("slow" in block.marks) != args.slow:
                 continue
-            if block.mark == "mpi" and args.with_mpi.upper() not in ("ON", "1", "TRUE", "YES"):
+            if "mpi" in block.marks and args.with_mpi.upper() not in ("ON", "1", "TRUE", "YES"):
                 print(f"skip {where}: needs a build with MPI (CTAB_WITH_MPI=ON)")
+                continue
+            needs_shared = "shared" in block.marks or "../shared" in block.text
+            if needs_shared and not os.path.isdir(os.path.join(os.path.dirname(args.source), "shared")):
+                print(f"skip {where}: needs the project's shared data, ../shared beside the source tree")
                 continue
             ran += 1
             failed += 0 if run_block(block, args) else 1
