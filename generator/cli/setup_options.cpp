@@ -38,7 +38,7 @@ CLI::Validator number_check(const NumberRule& rule) {
       rule.expectation);
 }
 
-// A hidden alias of `main` (kept for earlier scripts). Hidden CLI11 options have no name in CLI11's messages, so
+// A hidden alias of `main` (the short names scripts may use). Hidden CLI11 options have no name in CLI11's messages, so
 // the alias checks its value itself and names itself in errors.
 void add_hidden_alias(CLI::App& app, const std::string& alias, CLI::Option* main, double& target,
                       const NumberRule& rule) {
@@ -78,128 +78,163 @@ gen::TableConfig default_table_config(const std::string& source) {
   return gen::parse_table_config(gen::kDefaultTableConfig, source);
 }
 
+namespace {
+
+// The options one call of add_setup_options defines, in order.
+using AddedOptions = std::vector<CLI::Option*>;
+
+CLI::Option* keep(AddedOptions& added, CLI::Option* option) {
+  added.push_back(option);
+  return option;
+}
+
+// A smoothing option setting every setting of `into`: "auto", "auto-arcs" or a smoothing length.
+void add_smoothing_option(CLI::App& app, AddedOptions& added, const std::string& name,
+                          std::vector<gen::SmoothingSetting*> into, const std::string& help) {
+  const NumberRule length{"\"auto\", \"auto-arcs\" or a smoothing length in [0, 0.05] m",
+                          [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 0.05; }};
+  keep(added, app.add_option_function<std::string>(
+                     name,
+                     [into, length, name](const std::string& text) {
+                       gen::SmoothingSetting setting;
+                       if (const auto automatic = gen::automatic_smoothing(text)) {
+                         setting = *automatic;
+                       } else {
+                         double value = 0.0;
+                         if (!parse_number(text, value) || !length.accept(value))
+                           throw CLI::ValidationError(name, "expected " + length.expectation + ", got " + text);
+                         setting.automatic = false;
+                         setting.length_m = value;
+                       }
+                       for (gen::SmoothingSetting* s : into) *s = setting;
+                     },
+                     help)
+                  ->default_str(gen::smoothing_text(*into.front())));
+}
+
+void add_profile_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
+  keep(added,
+       app.add_option("--wheel", c.wheel, "wheel profile: S1002 (built in) or a file (.prw, .whl, 2-column y z in mm)")
+           ->capture_default_str());
+  keep(added, app.add_option("--rail", c.rail,
+                             "rail profile: UIC60 (built-in 60E1) or a file (.prr, .ban, 2-column y z in mm)")
+                  ->capture_default_str());
+  keep(added,
+       app.add_option("--inclination", c.inclination_text, "rail inclination: 1/40, 1/30, 1/20 or 0 (already inclined)")
+           ->capture_default_str());
+  // --smoothing sets both; --wheel-smoothing and --rail-smoothing, defined after it, run after it and override.
+  add_smoothing_option(
+      app, added, "--smoothing", {&c.wheel_smoothing, &c.rail_smoothing},
+      "smoothing of point profiles: auto (from the points' noise: the cubic spline of 1 mm when clean, "
+      "the adaptive smoother on noise; README \"Curvature\"), auto-arcs (the same for profiles drawn "
+      "as circular arcs and straight lines, such as new rails: keeps their curvature jumps; README "
+      "\"How to choose the smoothing\") or the cubic spline of a length [m] (0 interpolates)");
+  add_smoothing_option(app, added, "--wheel-smoothing", {&c.wheel_smoothing}, "the wheel's alone (as --smoothing)");
+  add_smoothing_option(app, added, "--rail-smoothing", {&c.rail_smoothing}, "the rail's alone (as --smoothing)");
+}
+
+void add_track_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
+  keep(added, app.add_option("--gauge", c.track.gauge_m, "track gauge [m]")
+                  ->capture_default_str()
+                  ->check(finite_positive("m", 3.0)));
+  keep(added,
+       app.add_option("--flange-back-distance", c.track.flange_back_distance_m, "wheelset flange-back distance [m]")
+           ->capture_default_str()
+           ->check(finite_positive("m", 3.0)));
+  keep(added, app.add_option("--nominal-radius", c.track.nominal_radius_m, "nominal rolling radius [m]")
+                  ->capture_default_str()
+                  ->check(finite_positive("m", 2.0)));
+}
+
+void add_mode_option(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
+  keep(added, app.add_option_function<std::string>(
+                     "--mode",
+                     [&c](const std::string& mode) {
+                       c.mode = mode == "wheel" ? gen::ContactMode::SingleWheel : gen::ContactMode::Wheelset;
+                     },
+                     "wheelset (rigid roll, both wheels touching) or wheel (single wheel, roll 0)")
+                  ->check(CLI::IsMember({"wheelset", "wheel"}))
+                  ->default_str(c.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"));
+}
+
+// Method, tolerance and strip width of the normal-contact solve.
+void add_method_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
+  keep(added, app.add_option_function<std::string>(
+                     "--method",
+                     [&c](const std::string& method) {
+                       c.least_model = method == "auto";
+                       c.method = c.least_model ? gen::NormalMethod::Mim1d : *gen::parse_contact_method(method);
+                     },
+                     "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices() +
+                         ", or auto (the least model: MIM-1D at the coarsest strip width within --tolerance)")
+                  ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d", "bem2d", "auto"}))
+                  ->default_str(gen::method_name(c.method)));
+  keep(added,
+       app.add_option("--tolerance", c.tolerance, "--method auto: relative error tolerance in area and max pressure")
+           ->capture_default_str()
+           ->check(finite_range(1e-6, 0.5, "")));
+  keep(added, app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
+                  ->capture_default_str()
+                  ->check(finite_range(kMinStripWidth_m, kMaxStripWidth_m, "m")));
+}
+
+// Where a patch's contact plane or surface lies: reference point, reference angle, planar or conformal.
+void add_contact_surface_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
+  keep(added,
+       app.add_option_function<std::string>(
+              "--reference-point",
+              [&c](const std::string& name) {
+                c.reference_at_interpenetration_centre = *gen::parse_reference_point(name);
+              },
+              "contact plane of a patch: deepest (rigid deepest point) or interpenetration-centre (CONTACT's rule; "
+              "README \"Flange and flank\")")
+           ->check(CLI::IsMember({std::string(gen::kReferencePointDeepest), std::string(gen::kReferencePointCentre)}))
+           ->default_str(std::string(gen::reference_point_name(c.reference_at_interpenetration_centre))));
+  keep(added,
+       app.add_option_function<std::string>(
+              "--reference-angle",
+              [&c](const std::string& name) { c.reference_angle = gen::parse_reference_angle(name); },
+              "inclination of a patch's contact plane: tangent (the rail's at the reference point) or "
+              "interpenetration-mean (CONTACT's: the mean over the interpenetration region; README \"Flange and "
+              "flank\")")
+           ->check(CLI::IsMember({std::string(gen::kReferenceAngleTangent), std::string(gen::kReferenceAngleMean)}))
+           ->default_str(std::string(gen::kReferenceAngleMean)));
+  keep(added,
+       app.add_option_function<std::string>(
+              "--surface", [&c](const std::string& name) { c.surface = *gen::parse_contact_surface(name); },
+              "contact surface of a patch: conformal (curved surface midway between the profiles, one normal per "
+              "strip, CONTACT's conformal approach) or planar (one plane; README \"Flange and flank\")")
+           ->check(CLI::IsMember({std::string(gen::kSurfacePlanar), std::string(gen::kSurfaceConformal)}))
+           ->default_str(std::string(gen::surface_name(c.surface))));
+}
+
+void add_material_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
+  const NumberRule youngs{"a finite Young's modulus > 0 in Pa", [](double v) { return std::isfinite(v) && v > 0.0; }};
+  const NumberRule poisson{"a Poisson's ratio in (-1, 0.5]", [](double v) { return v > -1.0 && v <= 0.5; }};
+  CLI::Option* E = keep(added, app.add_option("--youngs-modulus", c.material.youngs_modulus_Pa,
+                                              "Young's modulus of both bodies [Pa]")
+                                   ->capture_default_str()
+                                   ->check(number_check(youngs)));
+  CLI::Option* nu =
+      keep(added, app.add_option("--poisson-ratio", c.material.poisson_ratio, "Poisson's ratio of both bodies [-]")
+                      ->capture_default_str()
+                      ->check(number_check(poisson)));
+  add_hidden_alias(app, "--E", E, c.material.youngs_modulus_Pa, youngs);
+  add_hidden_alias(app, "--nu", nu, c.material.poisson_ratio, poisson);
+}
+
+}  // namespace
+
 std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, unsigned groups) {
-  std::vector<CLI::Option*> added;
-  auto add = [&](CLI::Option* option) {
-    added.push_back(option);
-    return option;
-  };
-  if (groups & kProfiles) {
-    add(app.add_option("--wheel", c.wheel, "wheel profile: S1002 (built in) or a file (.prw, .whl, 2-column y z in mm)")
-            ->capture_default_str());
-    add(app.add_option("--rail", c.rail,
-                       "rail profile: UIC60 (built-in 60E1) or a file (.prr, .ban, 2-column y z in mm)")
-            ->capture_default_str());
-    add(app.add_option("--inclination", c.inclination_text,
-                       "rail inclination: 1/40, 1/30, 1/20 or 0 (already inclined)")
-            ->capture_default_str());
-    // --smoothing sets both; --wheel-smoothing and --rail-smoothing, defined after it, run after it and override.
-    auto smoothing_option = [&](const std::string& name, std::vector<gen::SmoothingSetting*> into,
-                                const std::string& help) {
-      const NumberRule length{"\"auto\", \"auto-arcs\" or a smoothing length in [0, 0.05] m",
-                              [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 0.05; }};
-      add(app.add_option_function<std::string>(
-                 name,
-                 [into, length, name](const std::string& text) {
-                   gen::SmoothingSetting setting;
-                   if (const auto automatic = gen::automatic_smoothing(text)) {
-                     setting = *automatic;
-                   } else {
-                     double value = 0.0;
-                     if (!parse_number(text, value) || !length.accept(value))
-                       throw CLI::ValidationError(name, "expected " + length.expectation + ", got " + text);
-                     setting.automatic = false;
-                     setting.length_m = value;
-                   }
-                   for (gen::SmoothingSetting* s : into) *s = setting;
-                 },
-                 help)
-              ->default_str(gen::smoothing_text(*into.front())));
-    };
-    smoothing_option("--smoothing", {&c.wheel_smoothing, &c.rail_smoothing},
-                     "smoothing of point profiles: auto (from the points' noise: the cubic spline of 1 mm when clean, "
-                     "the adaptive smoother on noise; README \"Curvature\"), auto-arcs (the same for profiles drawn "
-                     "as circular arcs and straight lines, such as new rails: keeps their curvature jumps; README "
-                     "\"How to choose the smoothing\") or the cubic spline of a length [m] (0 interpolates)");
-    smoothing_option("--wheel-smoothing", {&c.wheel_smoothing}, "the wheel's alone (as --smoothing)");
-    smoothing_option("--rail-smoothing", {&c.rail_smoothing}, "the rail's alone (as --smoothing)");
-  }
-  if (groups & kTrack) {
-    add(app.add_option("--gauge", c.track.gauge_m, "track gauge [m]")
-            ->capture_default_str()
-            ->check(finite_positive("m", 3.0)));
-    add(app.add_option("--flange-back-distance", c.track.flange_back_distance_m, "wheelset flange-back distance [m]")
-            ->capture_default_str()
-            ->check(finite_positive("m", 3.0)));
-    add(app.add_option("--nominal-radius", c.track.nominal_radius_m, "nominal rolling radius [m]")
-            ->capture_default_str()
-            ->check(finite_positive("m", 2.0)));
-  }
-  if (groups & kMode) {
-    add(app.add_option_function<std::string>(
-               "--mode",
-               [&c](const std::string& mode) {
-                 c.mode = mode == "wheel" ? gen::ContactMode::SingleWheel : gen::ContactMode::Wheelset;
-               },
-               "wheelset (rigid roll, both wheels touching) or wheel (single wheel, roll 0)")
-            ->check(CLI::IsMember({"wheelset", "wheel"}))
-            ->default_str(c.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel"));
-  }
+  AddedOptions added;
+  if (groups & kProfiles) add_profile_options(app, c, added);
+  if (groups & kTrack) add_track_options(app, c, added);
+  if (groups & kMode) add_mode_option(app, c, added);
   if (groups & kSolver) {
-    add(app.add_option_function<std::string>(
-               "--method",
-               [&c](const std::string& method) {
-                 c.least_model = method == "auto";
-                 c.method = c.least_model ? gen::NormalMethod::Mim1d : *gen::parse_contact_method(method);
-               },
-               "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices() +
-                   ", or auto (the least model: MIM-1D at the coarsest strip width within --tolerance)")
-            ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d", "bem2d", "auto"}))
-            ->default_str(gen::method_name(c.method)));
-    add(app.add_option("--tolerance", c.tolerance, "--method auto: relative error tolerance in area and max pressure")
-            ->capture_default_str()
-            ->check(finite_range(1e-6, 0.5, "")));
-    add(app.add_option("--strip-width", c.strip_width_m, "strip width 2b [m]")
-            ->capture_default_str()
-            ->check(finite_range(kMinStripWidth_m, kMaxStripWidth_m, "m")));
-    add(app.add_option_function<std::string>(
-               "--reference-point",
-               [&c](const std::string& name) {
-                 c.reference_at_interpenetration_centre = *gen::parse_reference_point(name);
-               },
-               "contact plane of a patch: deepest (rigid deepest point) or interpenetration-centre (CONTACT's rule; "
-               "README \"Flange and flank\")")
-            ->check(CLI::IsMember({std::string(gen::kReferencePointDeepest), std::string(gen::kReferencePointCentre)}))
-            ->default_str(std::string(gen::reference_point_name(c.reference_at_interpenetration_centre))));
-    add(app.add_option_function<std::string>(
-               "--reference-angle",
-               [&c](const std::string& name) { c.reference_angle = gen::parse_reference_angle(name); },
-               "inclination of a patch's contact plane: tangent (the rail's at the reference point) or "
-               "interpenetration-mean (CONTACT's: the mean over the interpenetration region; README \"Flange and "
-               "flank\")")
-            ->check(CLI::IsMember({std::string(gen::kReferenceAngleTangent), std::string(gen::kReferenceAngleMean)}))
-            ->default_str(std::string(gen::kReferenceAngleMean)));
-    add(app.add_option_function<std::string>(
-               "--surface", [&c](const std::string& name) { c.surface = *gen::parse_contact_surface(name); },
-               "contact surface of a patch: conformal (curved surface midway between the profiles, one normal per "
-               "strip, CONTACT's conformal approach) or planar (one plane; README \"Flange and flank\")")
-            ->check(CLI::IsMember({std::string(gen::kSurfacePlanar), std::string(gen::kSurfaceConformal)}))
-            ->default_str(std::string(gen::surface_name(c.surface))));
+    add_method_options(app, c, added);
+    add_contact_surface_options(app, c, added);
   }
-  if (groups & kMaterial) {
-    const NumberRule youngs{"a finite Young's modulus > 0 in Pa", [](double v) { return std::isfinite(v) && v > 0.0; }};
-    const NumberRule poisson{"a Poisson's ratio in (-1, 0.5]", [](double v) { return v > -1.0 && v <= 0.5; }};
-    CLI::Option* E =
-        add(app.add_option("--youngs-modulus", c.material.youngs_modulus_Pa, "Young's modulus of both bodies [Pa]")
-                ->capture_default_str()
-                ->check(number_check(youngs)));
-    CLI::Option* nu =
-        add(app.add_option("--poisson-ratio", c.material.poisson_ratio, "Poisson's ratio of both bodies [-]")
-                ->capture_default_str()
-                ->check(number_check(poisson)));
-    add_hidden_alias(app, "--E", E, c.material.youngs_modulus_Pa, youngs);
-    add_hidden_alias(app, "--nu", nu, c.material.poisson_ratio, poisson);
-  }
+  if (groups & kMaterial) add_material_options(app, c, added);
   return added;
 }
 

@@ -56,6 +56,102 @@ void store(const std::vector<double>& from, std::vector<T>& to) {
   std::transform(from.begin(), from.end(), to.begin(), [](double v) { return static_cast<T>(v); });
 }
 
+// Offsets of a case record's parts (Table's stride_ and off_*_ members): the quantities of every slot, the slots'
+// presence flags and cell rules, the case status, the roll and delta r; padded to whole cache lines of the storage
+// type.
+struct RecordLayout {
+  std::size_t present = 0, rule = 0, status = 0, roll = 0, stride = 0;
+};
+
+RecordLayout record_layout(std::size_t n_slots, bool single_precision) noexcept {
+  const std::size_t per_line = kAlignBytes / (single_precision ? sizeof(float) : sizeof(double));
+  RecordLayout layout;
+  layout.present = n_slots * kQuantities;
+  layout.rule = layout.present + n_slots;
+  layout.status = layout.rule + n_slots;
+  layout.roll = layout.status + 1;
+  layout.stride = (layout.roll + 2 + per_line - 1) / per_line * per_line;
+  return layout;
+}
+
+// The dy cells' widths; `uniform` when every node lies on the mean step (to kUniformTolerance of the span): one width
+// for every cell and arithmetic search, so that an axis without refinement gives the answers of a uniform grid.
+std::vector<double> cell_widths(const std::vector<double>& dy_m, bool& uniform) {
+  const std::size_t n_dy = dy_m.size();
+  const double span = dy_m.back() - dy_m.front(), mean_step = span / static_cast<double>(n_dy - 1);
+  uniform = true;
+  for (std::size_t i = 0; i < n_dy; ++i)
+    uniform =
+        uniform && std::fabs(dy_m[i] - (dy_m.front() + mean_step * static_cast<double>(i))) <= kUniformTolerance * span;
+  std::vector<double> width(n_dy - 1, mean_step);
+  if (!uniform)
+    for (std::size_t i = 0; i + 1 < n_dy; ++i) width[i] = dy_m[i + 1] - dy_m[i];
+  return width;
+}
+
+// One record per case in double precision: quantities (zero for absent patches), presence, the rule of the cell
+// that starts at the case, status, roll and delta r.
+std::vector<double> case_records(const TableData& data, const RecordLayout& layout) {
+  const std::size_t n_dy = data.n_dy(), n_2 = data.n_second(), n_slots = data.n_slots;
+  std::vector<std::uint8_t> jump(data.present.size(), 0);  // by the patch index of the cell's lower end
+  for (const Jump& j : data.jumps) jump[data.patch_index(j.i_dy, j.i_second, j.wheel, j.slot)] = 1;
+  std::vector<double> records(n_dy * n_2 * kWheels * layout.stride, 0.0);
+  for (std::size_t i = 0; i < n_dy; ++i)
+    for (std::size_t i2 = 0; i2 < n_2; ++i2)
+      for (std::size_t w = 0; w < kWheels; ++w) {
+        const std::size_t c = data.case_index(i, i2, w);
+        double* record = records.data() + c * layout.stride;
+        for (std::size_t s = 0; s < n_slots; ++s) {
+          const std::size_t p = data.patch_index(i, i2, w, s);
+          if (data.present[p])  // absent patches stay zero
+            std::copy_n(data.quantities.begin() + static_cast<std::ptrdiff_t>(p * kQuantities), kQuantities,
+                        record + s * kQuantities);
+          record[layout.present + s] = data.present[p] ? 1.0 : 0.0;
+          CellRule rule = CellRule::Nearest;  // the last dy value starts no cell
+          if (i + 1 < n_dy)
+            rule = cell_rule(data.case_status[c], data.case_status[data.case_index(i + 1, i2, w)], data.present[p] != 0,
+                             data.present[data.patch_index(i + 1, i2, w, s)] != 0, jump[p] != 0);
+          record[layout.rule + s] = static_cast<double>(rule);
+        }
+        record[layout.status] = data.case_status[c];
+        record[layout.roll] = data.roll_rad[i * n_2 + i2];
+        record[layout.roll + 1] = data.rolling_radius_difference_m[i * n_2 + i2];
+      }
+  return records;
+}
+
+// The PCHIP dy-slopes of every record value that is interpolated (node_slope), laid out as the records: a slot's
+// quantities where the neighbouring cells interpolate it, the roll and delta r always.
+std::vector<double> pchip_slopes(const std::vector<double>& records, const RecordLayout& layout,
+                                 const std::vector<double>& width, std::size_t n_dy, std::size_t n_slots) {
+  const std::size_t stride = layout.stride;
+  const std::size_t row = records.size() / stride / n_dy;  // cases per dy value
+  std::vector<double> slopes(records.size(), 0.0);
+  const auto interpolable = [&](std::size_t c, std::size_t s) {
+    return records[c * stride + layout.rule + s] == static_cast<double>(CellRule::Interpolate);
+  };
+  const auto slope = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
+    const double v = records[c * stride + k];
+    const std::size_t i = c / row;
+    const double h_left = has_left ? width[i - 1] : 0.0, h_right = has_right ? width[i] : 0.0;
+    const double left = has_left ? (v - records[(c - row) * stride + k]) / h_left : 0.0;
+    const double right = has_right ? (records[(c + row) * stride + k] - v) / h_right : 0.0;
+    return node_slope(has_left, left, h_left, has_right, right, h_right);
+  };
+  for (std::size_t i = 0; i < n_dy; ++i)
+    for (std::size_t k = 0; k < row; ++k) {
+      const std::size_t c = i * row + k;
+      for (std::size_t s = 0; s < n_slots; ++s) {
+        const bool has_left = i >= 1 && interpolable(c - row, s), has_right = i + 1 < n_dy && interpolable(c, s);
+        for (std::size_t q = 0; q < kQuantities; ++q)
+          slopes[c * stride + s * kQuantities + q] = slope(c, s * kQuantities + q, has_left, has_right);
+      }
+      for (std::size_t k2 = layout.roll; k2 < layout.roll + 2; ++k2)  // roll and delta r: always interpolable
+        slopes[c * stride + k2] = slope(c, k2, i >= 1, i + 1 < n_dy);
+    }
+  return slopes;
+}
+
 }  // namespace
 
 LoadResult Table::load(const TableData& data, const LoadOptions& options) {
@@ -63,78 +159,18 @@ LoadResult Table::load(const TableData& data, const LoadOptions& options) {
   LoadResult result = validate(data);
   if (!result.ok()) return result;
 
-  const std::size_t n_dy = data.n_dy(), n_2 = data.n_second(), n_slots = data.n_slots;
-  const std::size_t cases = n_dy * n_2 * kWheels;
-  // A uniform axis (to 1e-9 of its span) keeps one width for every cell and arithmetic search (the answers of
-  // tables without refinement stay bit for bit what they were).
-  const double span = data.dy_m.back() - data.dy_m.front(), mean_step = span / static_cast<double>(n_dy - 1);
+  const std::size_t n_dy = data.n_dy(), n_slots = data.n_slots;
   bool uniform = true;
-  for (std::size_t i = 0; i < n_dy; ++i)
-    uniform = uniform && std::fabs(data.dy_m[i] - (data.dy_m.front() + mean_step * static_cast<double>(i))) <=
-                             kUniformTolerance * span;
-  std::vector<double> width(n_dy - 1, mean_step);
-  if (!uniform)
-    for (std::size_t i = 0; i + 1 < n_dy; ++i) width[i] = data.dy_m[i + 1] - data.dy_m[i];
-  // Record layout, padded to whole cache lines of the storage type.
-  const std::size_t per_line = kAlignBytes / (options.single_precision ? sizeof(float) : sizeof(double));
-  off_present_ = n_slots * kQuantities;
-  off_rule_ = off_present_ + n_slots;
-  off_status_ = off_rule_ + n_slots;
-  off_roll_ = off_status_ + 1;
-  stride_ = (off_roll_ + 2 + per_line - 1) / per_line * per_line;
-
-  std::vector<std::uint8_t> jump(data.present.size(), 0);  // by the patch index of the cell's lower end
-  for (const Jump& j : data.jumps) jump[data.patch_index(j.i_dy, j.i_second, j.wheel, j.slot)] = 1;
-  std::vector<double> records(cases * stride_, 0.0);
-  for (std::size_t i = 0; i < n_dy; ++i)
-    for (std::size_t i2 = 0; i2 < n_2; ++i2)
-      for (std::size_t w = 0; w < kWheels; ++w) {
-        const std::size_t c = data.case_index(i, i2, w);
-        double* record = records.data() + c * stride_;
-        for (std::size_t s = 0; s < n_slots; ++s) {
-          const std::size_t p = data.patch_index(i, i2, w, s);
-          if (data.present[p])  // absent patches stay zero
-            std::copy_n(data.quantities.begin() + static_cast<std::ptrdiff_t>(p * kQuantities), kQuantities,
-                        record + s * kQuantities);
-          record[off_present_ + s] = data.present[p] ? 1.0 : 0.0;
-          CellRule rule = CellRule::Nearest;  // the last dy value starts no cell
-          if (i + 1 < n_dy)
-            rule = cell_rule(data.case_status[c], data.case_status[data.case_index(i + 1, i2, w)], data.present[p] != 0,
-                             data.present[data.patch_index(i + 1, i2, w, s)] != 0, jump[p] != 0);
-          record[off_rule_ + s] = static_cast<double>(rule);
-        }
-        record[off_status_] = data.case_status[c];
-        record[off_roll_] = data.roll_rad[i * n_2 + i2];
-        record[off_roll_ + 1] = data.rolling_radius_difference_m[i * n_2 + i2];
-      }
-
-  std::vector<double> slopes;
-  if (options.interpolation == CTAB_PCHIP) {
-    const std::size_t row = n_2 * kWheels;  // cases per dy value
-    slopes.assign(records.size(), 0.0);
-    const auto interpolable = [&](std::size_t c, std::size_t s) {
-      return records[c * stride_ + off_rule_ + s] == static_cast<double>(CellRule::Interpolate);
-    };
-    const auto slope = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
-      const double v = records[c * stride_ + k];
-      const std::size_t i = c / row;
-      const double h_left = has_left ? width[i - 1] : 0.0, h_right = has_right ? width[i] : 0.0;
-      const double left = has_left ? (v - records[(c - row) * stride_ + k]) / h_left : 0.0;
-      const double right = has_right ? (records[(c + row) * stride_ + k] - v) / h_right : 0.0;
-      return node_slope(has_left, left, h_left, has_right, right, h_right);
-    };
-    for (std::size_t i = 0; i < n_dy; ++i)
-      for (std::size_t k = 0; k < row; ++k) {
-        const std::size_t c = i * row + k;
-        for (std::size_t s = 0; s < n_slots; ++s) {
-          const bool has_left = i >= 1 && interpolable(c - row, s), has_right = i + 1 < n_dy && interpolable(c, s);
-          for (std::size_t q = 0; q < kQuantities; ++q)
-            slopes[c * stride_ + s * kQuantities + q] = slope(c, s * kQuantities + q, has_left, has_right);
-        }
-        for (std::size_t k2 = off_roll_; k2 < off_roll_ + 2; ++k2)  // roll and delta r: always interpolable
-          slopes[c * stride_ + k2] = slope(c, k2, i >= 1, i + 1 < n_dy);
-      }
-  }
+  const std::vector<double> width = cell_widths(data.dy_m, uniform);
+  const RecordLayout layout = record_layout(n_slots, options.single_precision);
+  off_present_ = layout.present;
+  off_rule_ = layout.rule;
+  off_status_ = layout.status;
+  off_roll_ = layout.roll;
+  stride_ = layout.stride;
+  const std::vector<double> records = case_records(data, layout);
+  const std::vector<double> slopes =
+      options.interpolation == CTAB_PCHIP ? pchip_slopes(records, layout, width, n_dy, n_slots) : std::vector<double>{};
 
   if (options.single_precision) {
     store_aligned<float>(records, records_f_);

@@ -3,6 +3,7 @@
 // (the bound-constrained QP min 1/2 p'Ap + p'(h - delta), p >= 0: no mean subtraction, no rescaling).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "bem2d_internal.hpp"
 
@@ -62,116 +63,165 @@ void initial_pressure(InfluenceConvolution& influence, const ElementGrid& grid, 
   for (double& p : pressure) p *= scale;
 }
 
+namespace {
+
+// How a step of the pressure ended (steps 6-7): elements set to zero by the projection, or opened where the
+// deformed surfaces overlap; either makes the next direction steepest descent and u = A p be evaluated afresh.
+struct StepKind {
+  bool projected = false, overlap = false;
+};
+
+// One constrained CG solve: the pressure p (in/out) and the iteration's vectors and scalars, one method per step
+// of the published algorithm.
+class ConstrainedCg {
+ public:
+  ConstrainedCg(InfluenceConvolution& influence, const ElementGrid& grid, Prescribed prescribed, double target,
+                std::vector<double>& p)
+      : influence_(influence), grid_(grid), load_(prescribed == Prescribed::Load), target_(target),
+        element_area_(grid.dx * grid.dy), p_(p) {
+    const std::size_t n = p.size();
+    w_.g.assign(n, 0.0);
+    w_.t.assign(n, 0.0);
+    w_.previous.assign(n, 0.0);
+    influence_.apply(p_, w_.u);
+  }
+
+  // One iteration (steps 1-9); a status when the solve ends there.
+  std::optional<SolveStatus> iteration(double tolerance, CgResult& result) {
+    const double G = deformed_distance(result);
+    conjugate_direction(G);
+    double gt = 0.0, rt = 0.0;
+    step_products(gt, rt);
+    if (std::none_of(p_.begin(), p_.end(), [](double v) { return v > 0.0; })) return SolveStatus::NoContact;
+    if (G == 0.0) {  // exact solution on the set (all residuals zero)
+      result.residual = 0.0;
+      return SolveStatus::Converged;
+    }
+    if (!(rt > 0.0) || !std::isfinite(gt)) return SolveStatus::NumericalFailure;
+    const double tau = gt / rt;
+    const StepKind step = update_pressure(tau);
+    double scale = 1.0;
+    if (load_ && !rescale_to_load(scale)) return SolveStatus::NumericalFailure;
+    update_displacement(step, tau, scale);
+    return relative_change(tolerance, step, result);
+  }
+
+ private:
+  // Step 1: deformed distance on the potential area, measured from the mean over the contact set (load) or from
+  // the prescribed approach; returns its squared norm over the contact set.
+  double deformed_distance(CgResult& result) {
+    const std::size_t n = p_.size();
+    for (std::size_t e = 0; e < n; ++e) w_.g[e] = w_.u[e] + grid_.h[e];
+    const double datum = load_ ? contact_mean(w_.g, p_) : target_;
+    if (load_) result.approach = datum;
+    double G = 0.0;
+    for (std::size_t e = 0; e < n; ++e) {
+      w_.g[e] -= datum;
+      if (p_[e] > 0.0) G += w_.g[e] * w_.g[e];
+    }
+    return G;
+  }
+
+  // Steps 2-3: conjugate direction on the contact set.
+  void conjugate_direction(double G) {
+    const double beta = conjugate_ ? G / G_old_ : 0.0;
+    for (std::size_t e = 0; e < p_.size(); ++e) w_.t[e] = p_[e] > 0.0 ? w_.g[e] + beta * w_.t[e] : 0.0;
+    G_old_ = G;
+  }
+
+  // Steps 4-5: the products of the step length tau = g't / r't, r = A t (less its contact mean for a load).
+  void step_products(double& gt, double& rt) {
+    influence_.apply(w_.t, w_.r);
+    const double r_mean = load_ ? contact_mean(w_.r, p_) : 0.0;
+    for (std::size_t e = 0; e < p_.size(); ++e)
+      if (p_[e] > 0.0) {
+        gt += w_.g[e] * w_.t[e];
+        rt += (w_.r[e] - r_mean) * w_.t[e];
+      }
+  }
+
+  // Steps 6-7: update, project onto p >= 0, open overlapping elements.
+  StepKind update_pressure(double tau) {
+    w_.previous = p_;
+    StepKind step;
+    for (std::size_t e = 0; e < p_.size(); ++e) {
+      if (p_[e] > 0.0) {
+        p_[e] -= tau * w_.t[e];
+        if (p_[e] <= 0.0) {
+          p_[e] = 0.0;
+          step.projected = true;
+        }
+      } else if (grid_.potential[e] && w_.g[e] < 0.0) {
+        p_[e] = -tau * w_.g[e];
+        step.overlap = true;
+      }
+    }
+    conjugate_ = !step.overlap;
+    return step;
+  }
+
+  // Step 8: rescale to the load; false when no force is left.
+  bool rescale_to_load(double& scale) {
+    const double force = total(p_) * element_area_;
+    if (!(force > 0.0)) return false;
+    scale = target_ / force;
+    for (double& v : p_) v *= scale;
+    return true;
+  }
+
+  // u = A p: incremental when the step was a plain CG step, else afresh.
+  void update_displacement(const StepKind& step, double tau, double scale) {
+    if (step.projected || step.overlap || ++since_refresh_ >= kRefreshInterval) {
+      influence_.apply(p_, w_.u);
+      since_refresh_ = 0;
+    } else {
+      for (std::size_t e = 0; e < p_.size(); ++e) w_.u[e] = scale * (w_.u[e] - tau * w_.r[e]);
+    }
+  }
+
+  // Step 9: relative change of the pressure; converged below `tolerance` after a plain CG step.
+  std::optional<SolveStatus> relative_change(double tolerance, const StepKind& step, CgResult& result) {
+    const std::size_t n = p_.size();
+    double change = 0.0, sum = 0.0;
+    for (std::size_t e = 0; e < n; ++e) {
+      change += std::abs(p_[e] - w_.previous[e]);
+      sum += p_[e];
+    }
+    if (!std::isfinite(change) || !std::isfinite(sum)) return SolveStatus::NumericalFailure;
+    if (sum == 0.0) return SolveStatus::NoContact;  // approach too small for any element to stay loaded
+    result.residual = change / sum;
+    if (!(result.residual < tolerance && !step.projected && !step.overlap)) return std::nullopt;
+    if (load_) {  // the approach of the final field
+      for (std::size_t e = 0; e < n; ++e) w_.g[e] = w_.u[e] + grid_.h[e];
+      result.approach = contact_mean(w_.g, p_);
+    }
+    return SolveStatus::Converged;
+  }
+
+  InfluenceConvolution& influence_;
+  const ElementGrid& grid_;
+  const bool load_;
+  const double target_;
+  const double element_area_;  // [m^2]
+  std::vector<double>& p_;
+  Workspace w_;
+  double G_old_ = 1.0;
+  bool conjugate_ = false;
+  int since_refresh_ = 0;
+};
+
+}  // namespace
+
 CgResult solve_constrained_cg(InfluenceConvolution& influence, const ElementGrid& grid, Prescribed prescribed,
                               double target, const Bem2dGrid& options, std::vector<double>& p) {
-  const bool load = prescribed == Prescribed::Load;
-  const double element_area = grid.dx * grid.dy;
-  const std::size_t n = p.size();
-  Workspace w;
-  w.g.assign(n, 0.0);
-  w.t.assign(n, 0.0);
-  w.previous.assign(n, 0.0);
-  influence.apply(p, w.u);
+  ConstrainedCg cg(influence, grid, prescribed, target, p);
   CgResult result;
-  result.approach = load ? 0.0 : target;
-  double G_old = 1.0;
-  bool conjugate = false;
-  int since_refresh = 0;
+  result.approach = prescribed == Prescribed::Load ? 0.0 : target;
   const int cap = std::clamp(options.max_iterations, 1, kBem2dMaxIterations);
   for (int it = 1; it <= cap; ++it) {
     result.iterations = it;
-    // Step 1: deformed distance on the potential area, measured from the mean over the contact set (load) or from
-    // the prescribed approach.
-    for (std::size_t e = 0; e < n; ++e) w.g[e] = w.u[e] + grid.h[e];
-    const double datum = load ? contact_mean(w.g, p) : target;
-    if (load) result.approach = datum;
-    double G = 0.0;
-    for (std::size_t e = 0; e < n; ++e) {
-      w.g[e] -= datum;
-      if (p[e] > 0.0) G += w.g[e] * w.g[e];
-    }
-    // Steps 2-3: conjugate direction on the contact set.
-    const double beta = conjugate ? G / G_old : 0.0;
-    for (std::size_t e = 0; e < n; ++e) w.t[e] = p[e] > 0.0 ? w.g[e] + beta * w.t[e] : 0.0;
-    G_old = G;
-    // Steps 4-5: step length.
-    influence.apply(w.t, w.r);
-    const double r_mean = load ? contact_mean(w.r, p) : 0.0;
-    double gt = 0.0, rt = 0.0;
-    for (std::size_t e = 0; e < n; ++e)
-      if (p[e] > 0.0) {
-        gt += w.g[e] * w.t[e];
-        rt += (w.r[e] - r_mean) * w.t[e];
-      }
-    if (std::none_of(p.begin(), p.end(), [](double v) { return v > 0.0; })) {
-      result.status = SolveStatus::NoContact;
-      return result;
-    }
-    if (G == 0.0) {  // exact solution on the set (all residuals zero)
-      result.status = SolveStatus::Converged;
-      result.residual = 0.0;
-      return result;
-    }
-    if (!(rt > 0.0) || !std::isfinite(gt)) {
-      result.status = SolveStatus::NumericalFailure;
-      return result;
-    }
-    const double tau = gt / rt;
-    // Steps 6-7: update, project onto p >= 0, open overlapping elements.
-    w.previous = p;
-    bool projected = false, overlap = false;
-    for (std::size_t e = 0; e < n; ++e) {
-      if (p[e] > 0.0) {
-        p[e] -= tau * w.t[e];
-        if (p[e] <= 0.0) {
-          p[e] = 0.0;
-          projected = true;
-        }
-      } else if (grid.potential[e] && w.g[e] < 0.0) {
-        p[e] = -tau * w.g[e];
-        overlap = true;
-      }
-    }
-    conjugate = !overlap;
-    // Step 8: rescale to the load.
-    double scale = 1.0;
-    if (load) {
-      const double force = total(p) * element_area;
-      if (!(force > 0.0)) {
-        result.status = SolveStatus::NumericalFailure;
-        return result;
-      }
-      scale = target / force;
-      for (double& v : p) v *= scale;
-    }
-    // u = A p: incremental when the step was a plain CG step, else afresh.
-    if (projected || overlap || ++since_refresh >= kRefreshInterval) {
-      influence.apply(p, w.u);
-      since_refresh = 0;
-    } else {
-      for (std::size_t e = 0; e < n; ++e) w.u[e] = scale * (w.u[e] - tau * w.r[e]);
-    }
-    // Step 9: relative change of the pressure.
-    double change = 0.0, sum = 0.0;
-    for (std::size_t e = 0; e < n; ++e) {
-      change += std::abs(p[e] - w.previous[e]);
-      sum += p[e];
-    }
-    if (!std::isfinite(change) || !std::isfinite(sum)) {
-      result.status = SolveStatus::NumericalFailure;
-      return result;
-    }
-    if (sum == 0.0) {  // approach too small for any element to stay loaded: no contact
-      result.status = SolveStatus::NoContact;
-      return result;
-    }
-    result.residual = change / sum;
-    if (result.residual < options.tolerance && !projected && !overlap) {
-      if (load) {  // the approach of the final field
-        for (std::size_t e = 0; e < n; ++e) w.g[e] = w.u[e] + grid.h[e];
-        result.approach = contact_mean(w.g, p);
-      }
-      result.status = SolveStatus::Converged;
+    if (const std::optional<SolveStatus> status = cg.iteration(options.tolerance, result)) {
+      result.status = *status;
       return result;
     }
   }

@@ -14,8 +14,8 @@ namespace {
 // Minimum lateral curvature relative to the rolling one (CONTACT estimate_curvatures: R_y <= 20 R_x).
 constexpr double kMinimumCurvatureRatio = 1.0 / 20.0;
 // Two runs of virtual interpenetration separated by a ridge shallower than this fraction of the virtual depth
-// count partly as one (virtual_half_widths). Chosen: 2 %, a narrow but continuous blend; at 5 % the two-point
-// contact at dy = 5 mm (tread and flange root, ridge between 2 % and 5 % of the depth) moves by 1 % in area.
+// count partly as one (virtual_half_widths): 2 %, a narrow but continuous blend that stays below the ridge of a
+// two-point contact (tread and flange root at dy = 5 mm: between 2 % and 5 % of the depth), which is not merged.
 constexpr double kMergeBlendDepth = 0.02;
 // Smoothing kernel: a Gaussian cut at kKernelCutoff standard deviations and lowered by its value there, so that it
 // reaches zero continuously (a strip leaving its reach changes nothing). The local curvature carries a weight of

@@ -9,7 +9,7 @@
 namespace ctab::gen {
 
 //! Normal-contact methods, cheapest first in accuracy terms. Explicit values: they are stored (configs, tables)
-//! and must not change. Mim1d = 0 and Hertz = 1 keep the values of the earlier NormalMethod.
+//! and must not change; tables that record only Mim1d = 0 or Hertz = 1 read the same.
 enum class ContactMethod : std::int8_t {
   Mim1d = 0,   //!< MIM-1D strip solver (Qazi et al. 2022), mim1d.hpp
   Hertz = 1,   //!< one Hertz ellipse at the deepest point of the gap, hertz_strip.hpp

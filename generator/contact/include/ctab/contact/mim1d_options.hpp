@@ -18,11 +18,11 @@ struct Mim1dOptions {
   double strip_width_m = 0.2e-3;  //!< 2b [m]
   Mim1dUpdate update = Mim1dUpdate::Newton;
   CurvatureOptions curvature;  //!< lateral-curvature treatment in Eq. 26
-  //! Relative convergence tolerance (loads, force) [-]. Chosen: a few hundred times double round-off, which
-  //! Newton reaches in 7-40 iterations on the measured cases (ctab bench wheelrail, ctab paper-cases).
+  //! Relative convergence tolerance (loads, force) [-]: a few hundred times double round-off, which Newton reaches
+  //! in 7-40 iterations on the wheel-rail and paper cases (ctab bench wheelrail, ctab paper-cases).
   double tolerance = 1.0e-11;
-  //! Inner iterations per approach. Chosen: the measured cases need 7-40; 300 leaves a wide margin (the
-  //! fixed-point update is slower) and bounds a hopeless case.
+  //! Inner iterations per approach: those cases need 7-40; 300 leaves a wide margin (the fixed-point update is
+  //! slower) and bounds a hopeless case.
   int max_iterations = 300;
   //! Iterations on delta for a prescribed load (the fallback outer loop, a safeguarded Newton/bisection).
   int max_outer_iterations = 60;

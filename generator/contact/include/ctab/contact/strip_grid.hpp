@@ -24,7 +24,7 @@ struct StripGrid {
 
 //! Most strips of one strip problem. MIM-1D holds up to three dense n x n matrices (G, the Jacobian, its LU):
 //! at 4000 strips 3 x 128 MB = 384 MB per solver and seconds per factorisation. The smallest config strip width
-//! (10 um) still fits a tread patch (S1002/UIC60, dy = 2 mm: converged, 8.5 s); 1 um needed ~10 GB before the cap.
+//! (10 um) still fits a tread patch (S1002/UIC60, dy = 2 mm: converged, 8.5 s); 1 um strips would need ~10 GB.
 inline constexpr std::size_t kMaxStripsPerPatch = 4000;
 
 //! Number of strips fill_strip_grid makes for a validated gap, computed in double (no allocation, no overflow:

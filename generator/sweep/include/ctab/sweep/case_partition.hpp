@@ -15,10 +15,9 @@ namespace ctab::gen {
 //! table still makes 16 units for load balancing.
 inline constexpr std::size_t kRowsPerUnit = 8;
 //! Long sweeps take longer units, up to kMaxRowsPerUnit rows, while they keep kTargetUnits units: every unit's warm
-//! chain starts cold, and a cold start costs about 3.6 MIM-1D iterations more than a warm one (measured: the
-//! 0.01 mm sweep at 80 kN, 6.82 iterations per solve with 8-row chains, 6.43 with 64-row chains). Chosen: 48 units
-//! keep a 2401-row table's 10 loads at 960 tasks for the threads and 49 units for MPI ranks; 32 rows take most of
-//! the gain (a cold start in 32 solves instead of 8).
+//! chain starts cold, and a cold start costs a few MIM-1D iterations more than a warm one. 48 units keep a
+//! 2401-row table's 10 loads at 960 tasks for the threads and 49 units for MPI ranks; 32 rows take most of the
+//! gain (a cold start in 32 solves instead of 8).
 inline constexpr std::size_t kTargetUnits = 48;
 inline constexpr std::size_t kMaxRowsPerUnit = 32;
 
