@@ -1,7 +1,7 @@
 // `ctab bench stability [--out DIR] [--quick] [--scene NAME]... [--strip-width W]`: the stability matrix
-// (ctab/validation/stability_matrix.hpp): every rung on hard scenes. Writes DIR/stability.csv (one row per case x method)
-// and prints per scene and method: cases, statuses, worst error against the reference, worst time. Exit 4 when a
-// result holds a non-finite number or a converged case breaks the error bound ctab claims (the CSV stays).
+// (ctab/validation/stability_matrix.hpp): every rung on hard scenes. Writes DIR/stability.csv (one row per case x
+// method) and prints per scene and method: cases, statuses, worst error against the reference, worst time. Exit 4 when
+// a result holds a non-finite number or a converged case breaks the error bound ctab claims (the CSV stays).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>

@@ -176,8 +176,8 @@ void run_gap_scene(const Settings& settings, const std::string& scene, const Gap
     options.E_star_Pa = E_star;
     options.strip_width_m = rung.width_m;
     double time_s = 0.0;
-    const NormalSolution solution =
-        timed(settings, [&] { return solve_normal_contact(gap, options, Loading::approach(approach_m)); }, time_s);
+    const NormalSolution solution = timed(
+        settings, [&] { return solve_normal_contact(gap, options, Loading::approach(approach_m)); }, time_s);
     row_of(rows, scene, "all", rung, reference_label)
         .add(summarise(solution), reference, is_success(solution.status), time_s, contact);
     std::fprintf(stderr, "  %s %s %.2f mm: %.2e s\n", scene.c_str(), method_name(rung.method), rung.width_m * 1e3,
@@ -238,8 +238,8 @@ std::vector<ContactSummary> wheelrail_reference(const Settings& settings, const 
   return reference;
 }
 
-void run_wheelrail_scene(const Settings& settings, const TableConfig& profiles,
-                         const ContactCases& contact, Rows& rows) {
+void run_wheelrail_scene(const Settings& settings, const TableConfig& profiles, const ContactCases& contact,
+                         Rows& rows) {
   const std::vector<ContactSummary> reference = wheelrail_reference(settings, profiles);
   std::vector<Rung> wheelrail_rungs = rungs(settings.quick);
   // The least model, wheel-rail only (least_model.hpp); its width is the config's unused default.
@@ -250,7 +250,8 @@ void run_wheelrail_scene(const Settings& settings, const TableConfig& profiles,
     for (std::size_t i = 0; i < settings.shifts_m.size(); ++i) {
       const double dy = settings.shifts_m[i];
       double time_s = 0.0;
-      const WheelContact result = timed(settings, [&] { return solve_right_wheel(setup, dy); }, time_s);
+      const WheelContact result = timed(
+          settings, [&] { return solve_right_wheel(setup, dy); }, time_s);
       const auto found = contact.find(std::lround(dy * 1e6));
       const std::optional<ContactFigures> figures =
           found == contact.end() ? std::nullopt : std::optional<ContactFigures>(found->second);

@@ -8,8 +8,8 @@
 
 namespace ctab::gen {
 
-void AccuracyRow::add(const ContactSummary& candidate, const ContactSummary& reference_summary, bool ok,
-                      double time_s, const std::optional<ContactFigures>& contact) {
+void AccuracyRow::add(const ContactSummary& candidate, const ContactSummary& reference_summary, bool ok, double time_s,
+                      const std::optional<ContactFigures>& contact) {
   const AccuracyErrors e = accuracy_errors(candidate, reference_summary);
   ++cases;
   failed += ok ? 0 : 1;
@@ -42,10 +42,10 @@ std::string accuracy_csv(const std::vector<AccuracyRow>& rows) {
         << r.cases << ',' << r.failed << ',' << csv_number(r.time_sum_s / r.cases) << ','
         << csv_number(r.worst.area_rel) << ',' << csv_number(r.worst.max_pressure_rel) << ','
         << csv_number(r.worst.p0_profile_rms_rel) << ',' << csv_number(r.worst.contact_point_m) << ','
-        << csv_number(worst) << ',' << r.contact_cases << ',' << (has_contact ? csv_number(r.contact_area) : "")
-        << ',' << (has_contact ? csv_number(r.contact_pressure) : "") << ','
-        << (has_contact ? csv_number(r.contact_point) : "") << ','
-        << (r.tolerance > 0.0 ? csv_number(r.tolerance) : "") << '\n';
+        << csv_number(worst) << ',' << r.contact_cases << ',' << (has_contact ? csv_number(r.contact_area) : "") << ','
+        << (has_contact ? csv_number(r.contact_pressure) : "") << ','
+        << (has_contact ? csv_number(r.contact_point) : "") << ',' << (r.tolerance > 0.0 ? csv_number(r.tolerance) : "")
+        << '\n';
   }
   return out.str();
 }

@@ -53,8 +53,9 @@ std::string stability_summary(const std::vector<StabilityRow>& rows) {
     if (!lines.count(key)) order.push_back(key);
     add_row(lines[key], r);
   }
-  std::string text = formatted("%-22s %-7s %5s %5s %5s %5s %6s %7s %6s %9s %9s  %s\n", "scene", "method", "cases", "conv",
-                               "noc", "under", "failed", "claimed", "broken", "worst err", "worst s", "failures");
+  std::string text =
+      formatted("%-22s %-7s %5s %5s %5s %5s %6s %7s %6s %9s %9s  %s\n", "scene", "method", "cases", "conv", "noc",
+                "under", "failed", "claimed", "broken", "worst err", "worst s", "failures");
   for (const auto& key : order) {
     const SummaryLine& l = lines[key];
     std::string failures;

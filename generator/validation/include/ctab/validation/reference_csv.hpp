@@ -9,10 +9,10 @@
 namespace ctab::gen {
 
 struct CsvTable {
-  std::string source;                           //!< the file read
-  std::vector<std::string> header;              //!< column names
-  std::vector<std::vector<std::string>> rows;   //!< fields of each row after the header (empty lines skipped)
-  std::vector<std::size_t> row_lines;           //!< the file's line number of each row
+  std::string source;                          //!< the file read
+  std::vector<std::string> header;             //!< column names
+  std::vector<std::vector<std::string>> rows;  //!< fields of each row after the header (empty lines skipped)
+  std::vector<std::size_t> row_lines;          //!< the file's line number of each row
 
   //! Index of column `name`; throws InputError when the header has none.
   [[nodiscard]] std::size_t column(const std::string& name) const;
