@@ -4,15 +4,12 @@
 #include <cstdio>
 #include <string>
 
+#include "ctab/core/number_text.hpp"
+
 namespace ctab::gen::detail {
 
-//! A CSV field: 6 significant digits, empty for NaN and infinities.
-inline std::string csv_number(double v) {
-  if (!std::isfinite(v)) return "";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
+//! A CSV field: number_text, empty for NaN and infinities.
+inline std::string csv_number(double v) { return std::isfinite(v) ? number_text(v) : ""; }
 
 //! "bem2d_0.1mm": bem2d at element size `width_m` [m] as a reference.
 inline std::string bem2d_reference_name(double width_m) {

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 
 namespace ctab::gen {
 
