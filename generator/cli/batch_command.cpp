@@ -14,8 +14,9 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/io/sha256.hpp"
+#include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/sweep/batch_manifest.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "exit_codes.hpp"

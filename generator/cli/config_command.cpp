@@ -4,7 +4,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/table_config.hpp"
 
 namespace ctab::cli {

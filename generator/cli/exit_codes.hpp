@@ -1,6 +1,6 @@
 #pragma once
 //! Exit codes of the ctab executable (README "Exit codes") and the error that maps to the I/O code.
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 
 namespace ctab::cli {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/lookup/blob.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
 #include "ctab/lookup/table.hpp"

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/solve_status.hpp"
 #include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/table_generator.hpp"

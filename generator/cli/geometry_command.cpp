@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/wheelrail/contact_geometry_sweep.hpp"
 #include "setup_options.hpp"
 #include "table_case.hpp"

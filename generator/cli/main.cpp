@@ -13,7 +13,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "version.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 
 namespace {
 

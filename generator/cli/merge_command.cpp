@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/table_shard.hpp"
 #include "exit_codes.hpp"
 #include "output_guard.hpp"

@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/table_rows.hpp"
 

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "exit_codes.hpp"
 
 namespace ctab::cli {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
 
 namespace ctab::cli {

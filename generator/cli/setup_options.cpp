@@ -8,6 +8,7 @@
 #include <functional>
 #include <sstream>
 
+#include "ctab/core/number_text.hpp"
 #include "ctab/io/profile_io.hpp"
 
 namespace ctab::cli {
@@ -55,21 +56,15 @@ void add_hidden_alias(CLI::App& app, const std::string& alias, CLI::Option* main
       ->group("");
 }
 
-std::string number_text(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
 }  // namespace
 
 CLI::Validator finite_range(double min, double max, const std::string& unit) {
-  return number_check({"a number in [" + number_text(min) + ", " + number_text(max) + "] " + unit,
+  return number_check({"a number in [" + gen::number_text(min) + ", " + gen::number_text(max) + "] " + unit,
                        [min, max](double v) { return std::isfinite(v) && v >= min && v <= max; }});
 }
 
 CLI::Validator finite_positive(const std::string& unit, double max) {
-  const std::string bound = max < 1e300 ? " up to " + number_text(max) : "";
+  const std::string bound = max < 1e300 ? " up to " + gen::number_text(max) : "";
   return number_check({"a finite number > 0" + bound + " " + unit,
                        [max](double v) { return std::isfinite(v) && v > 0.0 && v <= max; }});
 }

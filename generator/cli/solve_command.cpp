@@ -9,7 +9,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/normal_contact.hpp"
 #include "ctab/contact/strip_grid.hpp"
 #include "ctab/io/gap_csv.hpp"

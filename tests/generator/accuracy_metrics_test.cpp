@@ -1,5 +1,5 @@
 // Accuracy measures of `ctab bench accuracy` (accuracy_metrics.hpp): summaries of solutions and their errors.
-#include "ctab/sweep/accuracy_metrics.hpp"
+#include "ctab/validation/accuracy_metrics.hpp"
 
 #include <gtest/gtest.h>
 

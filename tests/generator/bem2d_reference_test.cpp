@@ -13,6 +13,7 @@
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/fixtures/paper_cases.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;
@@ -34,7 +35,7 @@ bool have_reference() { return std::filesystem::exists(ctab::test::shared_path("
 
 // One row of a CONTACT summary file by its `case` name, as column -> number.
 std::map<std::string, double> reference_row(const std::string& file, const std::string& case_name) {
-  const auto table = ctab::test::read_csv(ctab::test::shared_path("reference/contact/" + file));
+  const auto table = ctab::gen::read_csv(ctab::test::shared_path("reference/contact/" + file));
   const std::size_t name = table.column("case");
   std::map<std::string, double> out;
   for (const auto& row : table.rows)
@@ -127,7 +128,7 @@ TEST_P(Bem2dNonHertz, MatchesContact) {
   EXPECT_NEAR(p.y_min_m * 1e3, ref.at("y_min_mm"), 1e-9);
   EXPECT_NEAR(p.y_max_m * 1e3, ref.at("y_max_mm"), 1e-9);
   // Per strip (row): half the loaded x-extent exactly, row max pressure and row load within 0.1 %.
-  const auto strips = ctab::test::read_csv(ctab::test::shared_path(
+  const auto strips = ctab::gen::read_csv(ctab::test::shared_path(
       std::string("reference/contact/nonhertz_r40_r500_strips_") + (force ? "force2645kN" : "approach1mm") + ".csv"));
   const auto y = strips.numbers("y_mm"), a = strips.numbers("a_count_mm"), p0 = strips.numbers("p0_i_MPa"),
              q = strips.numbers("q_i_N_per_mm");

@@ -11,7 +11,7 @@
 #include "ctab/contact/bem2d.hpp"
 #include "ctab/contact/bem2d_convolution.hpp"
 #include "ctab/contact/bem2d_influence.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/fixtures/paper_cases.hpp"

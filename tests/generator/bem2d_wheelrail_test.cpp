@@ -14,6 +14,7 @@
 #include <string>
 
 #include "ctab/contact/material.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "manchester_side.hpp"
 #include "test_support.hpp"
@@ -38,7 +39,7 @@ struct ContactRow {
 
 ContactRow contact_row(const Case& c) {
   const auto summary =
-      ctab::test::read_csv(ctab::test::shared_path(std::string("reference/contact/wheelrail/") + c.file));
+      ctab::gen::read_csv(ctab::test::shared_path(std::string("reference/contact/wheelrail/") + c.file));
   const auto dys = summary.numbers("dy_mm"), areas = summary.numbers("area_mm2"), pmaxes = summary.numbers("pmax_MPa");
   const auto ycps = summary.numbers("ycp_rail_mm"), angles = summary.numbers("contact_angle_rad");
   ContactRow row;

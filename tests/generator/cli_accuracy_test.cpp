@@ -11,12 +11,13 @@
 #include <vector>
 
 #include "cli_run.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "test_support.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-using ctab::test::CsvTable;
+using ctab::gen::CsvTable;
 
 const std::vector<std::string> kColumns = {"scene",
                                            "region",
@@ -143,7 +144,7 @@ TEST(AccuracyBench, QuickRun) {
       args.push_back(arg);
   }
   const ctab::test::CtabRun run = ctab::test::run_ctab(args);
-  const CsvTable table = ctab::test::read_csv((dir / "accuracy.csv").string());
+  const CsvTable table = ctab::gen::read_csv((dir / "accuracy.csv").string());
   expect_columns(&run, &table);
   expect_every_method(&table);
   expect_finite(&table);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "test_support.hpp"
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -43,7 +44,7 @@ TEST(StabilityBench, QuickSceneWritesTheCsv) {
       std::vector<std::string>{"bench", "stability", "--quick", "--scene", "barely_touching", "--out", dir.string()});
   ASSERT_EQ(run.exit_code, 0) << run.output();
   EXPECT_NE(run.out.find("wrote"), std::string::npos) << run.output();
-  const ctab::test::CsvTable table = ctab::test::read_csv((dir / "stability.csv").string());
+  const ctab::gen::CsvTable table = ctab::gen::read_csv((dir / "stability.csv").string());
   EXPECT_EQ(table.header, kColumns);
   ASSERT_EQ(table.rows.size(), 10u);  // two cases x five rungs
   std::set<std::string> methods;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "test_support.hpp"

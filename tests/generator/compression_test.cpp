@@ -9,7 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "ctab/tables/table.hpp"

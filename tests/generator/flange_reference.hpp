@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "ctab/validation/reference_csv.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "manchester_side.hpp"
 #include "test_support.hpp"
@@ -62,7 +63,7 @@ struct Reference {
 };
 
 inline Reference read_reference(const std::string& surface, const Case& c) {
-  const auto summary = read_csv(reference_path(surface + "_" + c.loading + ".csv"));
+  const auto summary = gen::read_csv(reference_path(surface + "_" + c.loading + ".csv"));
   const auto dys = summary.numbers("dy_mm");
   const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), c.dy_mm) - dys.begin());
   EXPECT_LT(row, dys.size()) << surface << " " << c.loading << " dy " << c.dy_mm;
@@ -111,7 +112,7 @@ inline ParabolaPeak fit_parabola(const std::vector<double>& s, const std::vector
 
 //! pi a b of CONTACT's rows [mm^2]: b from the row loads q_i, a from a_ell,i^2.
 inline double contact_ellipse_area_mm2(const std::string& strip_file) {
-  const auto rows = ctab::test::read_csv(strip_file);
+  const auto rows = ctab::gen::read_csv(strip_file);
   const auto s = rows.numbers("s_local_mm"), q = rows.numbers("q_i_N_per_mm"), a_ell = rows.numbers("a_ell_mm");
   std::vector<double> a_squared;
   for (const double a : a_ell) a_squared.push_back(a * a);

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/io/gap_csv.hpp"
 #include "test_support.hpp"
 

@@ -14,7 +14,7 @@
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/normal_contact.hpp"
 #include "ctab/contact/resolution.hpp"
-#include "ctab/sweep/accuracy_metrics.hpp"
+#include "ctab/validation/accuracy_metrics.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "ctab/wheelrail/least_model.hpp"
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ctab/io/profile_io.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "test_support.hpp"
@@ -50,7 +51,7 @@ struct ContactRowLine {
 //! The row line of CONTACT's single patch at dy [mm] in a planar summary CSV (columns dy_mm, ycp_rail_mm,
 //! contact_angle_rad).
 inline ContactRowLine contact_row_line(const std::string& summary_file, double dy_mm, const gen::ProfileTable& rail) {
-  const auto table = read_csv(summary_file);
+  const auto table = gen::read_csv(summary_file);
   const auto dys = table.numbers("dy_mm");
   const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), dy_mm) - dys.begin());
   EXPECT_EQ(std::count(dys.begin(), dys.end(), dy_mm), 1) << summary_file << ": one patch at dy " << dy_mm << " mm";
@@ -68,7 +69,7 @@ inline ContactRowLine contact_row_line(const std::string& summary_file, double d
 //! their y_rail_m (conformal: the surface points, as CONTACT's conformal rows).
 inline double p0_profile_rms(const gen::WheelContact& contact, const std::string& strip_file,
                              const ContactRowLine* line = nullptr, const gen::ProfileTable* rail = nullptr) {
-  const auto table = read_csv(strip_file);
+  const auto table = gen::read_csv(strip_file);
   const auto y = table.numbers("y_rail_mm"), p = table.numbers("p0_i_MPa");
   std::vector<double> ours(y.size(), 0.0);  // ctab's p0 at each row [MPa]
   for (const auto& patch : contact.patches) {

@@ -13,6 +13,7 @@
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/normal_contact.hpp"
 #include "ctab/fixtures/paper_cases.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;
@@ -178,7 +179,7 @@ TEST(MethodLadder, EllipticGapsAnalynExactKpAsDerived) {
 TEST(MethodLadder, NonHertzianCaseAgainstContact) {
   const std::string path = ctab::test::shared_path("reference/contact/nonhertz_r40_r500.csv");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " absent";
-  const auto table = ctab::test::read_csv(path);
+  const auto table = ctab::gen::read_csv(path);
   const auto area = table.numbers("area_mm2"), pmax = table.numbers("pmax_MPa"), force = table.numbers("FN_N");
   // Rows: nonhz_P_dx0p2 (approach 1 mm), nonhz_F_dx0p2 (force 2645 kN).
   struct Expected {

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/gap_profile.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/mim1d.hpp"

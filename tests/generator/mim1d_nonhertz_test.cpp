@@ -9,6 +9,7 @@
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/mim1d.hpp"
 #include "ctab/fixtures/paper_cases.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "test_support.hpp"
 
 using namespace ctab::gen;
@@ -26,7 +27,7 @@ struct StripErrors {
 // Compares per strip with CONTACT's rows (same strip centres: edges at multiples of 0.2 mm). A CONTACT row
 // without a MIM-1D strip counts with MIM-1D's value 0, and vice versa.
 StripErrors compare_strips(const NormalSolution& s, const std::string& file) {
-  const auto table = ctab::test::read_csv(ctab::test::shared_path("reference/contact/" + file));
+  const auto table = ctab::gen::read_csv(ctab::test::shared_path("reference/contact/" + file));
   const auto y = table.numbers("y_mm"), a = table.numbers("a_ell_mm"), p = table.numbers("p0_i_MPa");
   std::map<long, std::pair<double, double>> mim;  // key: strip centre in 0.1 mm units
   for (const auto& patch : s.patches)
@@ -57,7 +58,7 @@ StripErrors compare_strips(const NormalSolution& s, const std::string& file) {
 }
 
 double reference_value(const std::string& case_name, const std::string& column) {
-  const auto table = ctab::test::read_csv(ctab::test::shared_path("reference/contact/nonhertz_r40_r500.csv"));
+  const auto table = ctab::gen::read_csv(ctab::test::shared_path("reference/contact/nonhertz_r40_r500.csv"));
   const std::size_t c = table.column(column), name = table.column("case");
   for (const auto& row : table.rows)
     if (row[name] == case_name) return std::stod(row[c]);

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <random>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/hertz_strip.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/mim1d.hpp"

@@ -18,7 +18,7 @@
 #include <sstream>
 
 #include "cli_run.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/profiles/adaptive_smoothing.hpp"

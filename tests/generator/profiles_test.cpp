@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ctab/profiles/builtin_profiles.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/profiles/rail_cant.hpp"
 #include "test_support.hpp"

@@ -1,4 +1,4 @@
-// The stability matrix (ctab/sweep/stability_matrix.hpp, issue 10 "Stability where methods fail"): every rung on
+// The stability matrix (ctab/validation/stability_matrix.hpp, issue 10 "Stability where methods fail"): every rung on
 // hard scenes. Per row: no NaN or inf, bounded time, a known status, "no-contact" without load, and where ctab
 // claims validity (stability_claim_applies: converged, resolved by >= 8 strips, no roughness below two strips
 // that carries over 10 % of the mean pressure, in the method's domain) the error within the stated bound. The quick
@@ -13,7 +13,7 @@
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/normal_contact.hpp"
-#include "ctab/sweep/stability_matrix.hpp"
+#include "ctab/validation/stability_matrix.hpp"
 
 using namespace ctab::gen;
 

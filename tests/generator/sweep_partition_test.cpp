@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "ctab/sweep/table_rows.hpp"

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/sweep/table_generator.hpp"

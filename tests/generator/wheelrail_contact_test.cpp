@@ -11,6 +11,7 @@
 
 #include "ctab/contact/material.hpp"
 #include "ctab/io/profile_io.hpp"
+#include "ctab/validation/reference_csv.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "manchester_side.hpp"
 #include "test_support.hpp"
@@ -38,7 +39,7 @@ struct SummaryRow {
 };
 
 SummaryRow summary_row(double dy_mm) {
-  const auto summary = ctab::test::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
+  const auto summary = ctab::gen::read_csv(ctab::test::shared_path("reference/contact/wheelrail/summary.csv"));
   const auto dys = summary.numbers("dy_mm");
   const auto row = static_cast<std::size_t>(std::find(dys.begin(), dys.end(), dy_mm) - dys.begin());
   if (row >= dys.size()) return {};

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/material.hpp"
 #include "ctab/contact/mim1d.hpp"
 #include "ctab/contact/strip_grid.hpp"

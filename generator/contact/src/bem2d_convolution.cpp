@@ -10,7 +10,7 @@
 
 #include "ctab/contact/bem2d_influence.hpp"
 #include "ctab/contact/bem2d_options.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 
 namespace ctab::gen {
 

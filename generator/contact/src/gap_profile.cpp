@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 
 namespace ctab::gen {
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/strip_kernel.hpp"
 #include "mim1d_constants.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "ctab/contact/analyn.hpp"
 #include "ctab/contact/bem2d.hpp"
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/hertz_strip.hpp"
 #include "ctab/contact/kik_piotrowski.hpp"
 #include "ctab/contact/mim1d.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/root_finding.hpp"
 

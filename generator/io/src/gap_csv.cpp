@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/io/text_input.hpp"
 
 namespace ctab::gen {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <sstream>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/io/text_input.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/profiles/rail_cant.hpp"
@@ -423,12 +423,12 @@ ProfileTable load_profile(const std::string& spec, ProfileRole role, const Profi
 ProfileTable load_profile(const std::string& spec, ProfileRole role, const ProfileReadOptions& options,
                           ProfileSmoothing& smoothing) {
   smoothing = ProfileSmoothing{};
-  const std::string name = lower(spec);
+  const BuiltinProfile builtin = builtin_profile(spec);
   std::shared_ptr<const ProfileCurve> curve;
-  if (role == ProfileRole::Wheel && name == "s1002") {
+  if (role == ProfileRole::Wheel && builtin == BuiltinProfile::S1002) {
     return ProfileTable(*s1002_curve(), kProfileTableStep_m, "S1002");
   }
-  if (role == ProfileRole::Rail && (name == "uic60" || name == "60e1")) {
+  if (role == ProfileRole::Rail && builtin == BuiltinProfile::Uic60) {
     return ProfileTable(*uic60_inclined_curve(options.inclination), kProfileTableStep_m, "UIC60");
   }
   const ProfilePoints points = read_profile_points(spec, role, options);

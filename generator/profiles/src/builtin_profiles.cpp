@@ -1,6 +1,8 @@
 #include "ctab/profiles/builtin_profiles.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -141,5 +143,16 @@ std::shared_ptr<const ProfileCurve> uic60_inclined_curve(double inclination) {
   return std::make_shared<TransformedCurve>(upright, -theta, -crown_radius * std::sin(theta),
                                             crown_radius * (1.0 - std::cos(theta)));
 }
+
+BuiltinProfile builtin_profile(const std::string& name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (lower == "s1002") return BuiltinProfile::S1002;
+  if (lower == "uic60" || lower == "60e1") return BuiltinProfile::Uic60;
+  return BuiltinProfile::None;
+}
+
+bool is_builtin_profile(const std::string& name) { return builtin_profile(name) != BuiltinProfile::None; }
 
 }  // namespace ctab::gen

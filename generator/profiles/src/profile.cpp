@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 
 namespace ctab::gen {
 

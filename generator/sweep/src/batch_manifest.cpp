@@ -4,12 +4,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
-#include <toml++/toml.h>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
+#include "ctab/profiles/builtin_profiles.hpp"
+#include "toml_input.hpp"
 
 namespace ctab::gen {
 
@@ -22,7 +21,7 @@ struct ManifestReader {
   std::string directory;
 
   [[noreturn]] void fail(const toml::node& node, const std::string& key, const std::string& what) const {
-    throw InputError(source, static_cast<std::size_t>(node.source().begin.line), "'" + key + "': " + what);
+    detail::fail_at(source, node, key, what);
   }
 
   std::string resolve(const std::string& spec) const {
@@ -69,20 +68,8 @@ std::string stem_of(const std::string& spec) {
 
 }  // namespace
 
-bool is_builtin_profile(const std::string& spec) {
-  std::string name = spec;
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return name == "s1002" || name == "uic60" || name == "60e1";
-}
-
 BatchManifest parse_batch_manifest(const std::string& text, const std::string& source, const std::string& directory) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(source, static_cast<std::size_t>(e.source().begin.line), std::string(e.description()));
-  }
+  const toml::table root = detail::parse_toml(text, source);
   const ManifestReader r{source, directory};
   for (const auto& [key, node] : root) {
     const std::string name(key.str());
@@ -144,11 +131,7 @@ BatchManifest parse_batch_manifest(const std::string& text, const std::string& s
 }
 
 BatchManifest read_batch_manifest(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open manifest file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_batch_manifest(text.str(), path, fs::path(path).parent_path().string());
+  return parse_batch_manifest(detail::read_toml_file(path, "manifest"), path, fs::path(path).parent_path().string());
 }
 
 TableConfig pair_config(const BatchManifest& manifest, const ProfilePair& pair) {

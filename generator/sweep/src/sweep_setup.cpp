@@ -2,10 +2,10 @@
 // from the config, the process-wide tables built, and the plan of what the sweep solves.
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/strip_kernel.hpp"
+#include "ctab/core/number_text.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "sweep_plan.hpp"
@@ -33,10 +33,9 @@ ProfileTable load_checked(const TableConfig& config, const std::string& spec, Pr
 
 void check_strip_width(const TableConfig& config) {
   if (config.strip_width_m >= kMinStripWidth_m && config.strip_width_m <= kMaxStripWidth_m) return;
-  std::ostringstream range;
-  range << "expected a strip width in [" << kMinStripWidth_m << ", " << kMaxStripWidth_m << "] m, got "
-        << config.strip_width_m;
-  throw SweepSetupError(config, "solver.strip_width_m", range.str());
+  throw SweepSetupError(config, "solver.strip_width_m",
+                        "expected a strip width in [" + number_text(kMinStripWidth_m) + ", " +
+                            number_text(kMaxStripWidth_m) + "] m, got " + number_text(config.strip_width_m));
 }
 
 }  // namespace

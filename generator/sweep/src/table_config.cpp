@@ -3,16 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <toml++/toml.h>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
+#include "ctab/core/number_text.hpp"
 #include "ctab/io/profile_io.hpp"
+#include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/wheelrail/axis_range.hpp"
+#include "toml_input.hpp"
 
 namespace ctab::gen {
 
@@ -60,7 +61,7 @@ compression = 1         # HDF5 deflate level: 0 (none, fastest, ~3x larger) .. 9
 
 namespace {
 
-std::size_t line_of(const toml::node& node) { return node.source().begin.line; }
+using detail::line_of;
 
 //! Per-patch quantities of the table (tables/README.md): 20 scalars per slot, besides the two strip profiles.
 constexpr double kTableScalarsPerSlot = 20.0;
@@ -71,7 +72,7 @@ class Reader {
   Reader(const toml::table& root, std::string source) : root_(root), source_(std::move(source)) {}
 
   [[noreturn]] void fail(const toml::node& node, const std::string& key, const std::string& message) const {
-    throw InputError(source_, line_of(node), "'" + key + "': " + message);
+    detail::fail_at(source_, node, key, message);
   }
   [[noreturn]] void fail_at(std::size_t line, const std::string& key, const std::string& message) const {
     throw InputError(source_, line, "'" + key + "': " + message);
@@ -141,11 +142,7 @@ class Reader {
     const toml::node* node = find(table, key);
     if (!node) return fallback;
     if (const auto v = node->value<std::string>()) return *v;
-    if (const auto v = node->value<double>()) {
-      std::ostringstream out;
-      out << *v;
-      return out.str();
-    }
+    if (const auto v = node->value<double>()) return number_text(*v);
     fail(*node, table + "." + key, "expected a string");
   }
 
@@ -294,11 +291,7 @@ void read_solver(const Reader& r, TableConfig& c) {
   c.warm_start = r.flag("solver", "warm_start", c.warm_start);
 }
 
-std::string metres_text(double value) {
-  std::ostringstream text;
-  text << value << " m";
-  return text.str();
-}
+std::string metres_text(double value) { return number_text(value) + " m"; }
 
 // [axes] lateral_refinement_m: zones {start, stop, step} of finer steps whose nodes join the dy axis (where the
 // contact changes fast: the flange climb, two-point contact). A node within 1e-9 of a step of one already there is
@@ -430,12 +423,7 @@ const char* load_axis_name(LoadKind kind) noexcept {
 }
 
 TableConfig parse_table_config(const std::string& text, const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(source, e.source().begin.line, std::string("TOML syntax: ") + std::string(e.description()));
-  }
+  const toml::table root = detail::parse_toml(text, source);
   const Reader r(root, source);
   r.check_keys(
       {{"profiles", {"wheel", "rail", "inclination", "smoothing_m", "wheel_smoothing_m", "rail_smoothing_m"}},
@@ -473,18 +461,12 @@ SideGeometry place_profiles(const TableConfig& config, const ProfileTable& wheel
 }
 
 TableConfig read_table_config(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open config file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  TableConfig config = parse_table_config(text.str(), path);
+  TableConfig config = parse_table_config(detail::read_toml_file(path, "config"), path);
   // Profile files given relative to the config file.
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
   for (std::string* spec : {&config.wheel, &config.rail}) {
-    const std::string name = *spec;
-    const bool builtin =
-        name == "S1002" || name == "s1002" || name == "UIC60" || name == "uic60" || name == "60E1" || name == "60e1";
-    if (!builtin && std::filesystem::path(name).is_relative()) *spec = (directory / name).lexically_normal().string();
+    if (!is_builtin_profile(*spec) && std::filesystem::path(*spec).is_relative())
+      *spec = (directory / *spec).lexically_normal().string();
   }
   return config;
 }

@@ -4,7 +4,7 @@
 #include <charconv>
 #include <map>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/slot_assignment.hpp"
 #include "ctab/sweep/table_rows.hpp"

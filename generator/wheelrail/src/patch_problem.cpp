@@ -1,7 +1,6 @@
 #include "patch_problem.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <exception>
 
 #include "ctab/contact/hertz.hpp"
@@ -19,12 +18,6 @@ GridAlignment strip_alignment(const WheelRailOptions& options) {
 bool same_point(const GapMinimum& a, const GapMinimum& b) {
   return a.wheel_s_m == b.wheel_s_m && a.rail_y_m == b.rail_y_m && a.gap_m == b.gap_m &&
          a.contact_angle_rad == b.contact_angle_rad && a.rolling_radius_m == b.rolling_radius_m;
-}
-
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
 }
 
 std::string prepare_mim1d_solver(std::unique_ptr<Mim1dSolver>& solver, const GapProfile& gap, double E_star,

@@ -9,6 +9,7 @@
 
 #include "ctab/contact/gap_profile.hpp"
 #include "ctab/contact/mim1d.hpp"
+#include "ctab/core/number_text.hpp"
 #include "ctab/contact/normal_solution.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 #include "ctab/wheelrail/wheelrail_options.hpp"
@@ -55,9 +56,6 @@ struct PatchProblem {
 
 //! Whether two reference points are the same point (every field equal: a patch built at either is the same).
 [[nodiscard]] bool same_point(const GapMinimum& a, const GapMinimum& b);
-
-//! A number as the messages print it (%.6g).
-[[nodiscard]] std::string number_text(double value);
 
 //! Creates the patch's MIM-1D solver, or re-targets the one it already has. Returns an empty string, or why not.
 [[nodiscard]] std::string prepare_mim1d_solver(std::unique_ptr<Mim1dSolver>& solver, const GapProfile& gap,

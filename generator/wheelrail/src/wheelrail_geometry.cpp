@@ -5,7 +5,8 @@
 #include <cstdio>
 #include <string>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
+#include "ctab/core/number_text.hpp"
 #include "ctab/contact/root_finding.hpp"
 #include "ctab/wheelrail/first_contact_tracker.hpp"
 #include "gap_scan.hpp"
@@ -137,11 +138,7 @@ constexpr int kGuessWidenings = 6;
 constexpr int kRollIterations = 100;
 constexpr int kLatticeSteps = 64;  // the root finder ends within one lattice step; more means it failed
 
-std::string shift_text(double dy_m) {
-  char text[48];
-  std::snprintf(text, sizeof text, "dy = %.6g m", dy_m);
-  return text;
-}
+std::string shift_text(double dy_m) { return "dy = " + number_text(dy_m) + " m"; }
 
 // Why the roll iteration failed, in words.
 std::string roll_failure(double dy_m, double f_lo, double f_hi, double bracket_rad) {

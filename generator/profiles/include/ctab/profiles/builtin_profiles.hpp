@@ -8,6 +8,7 @@
 //!   a 1:20 flank, flank to 37.5 mm below the top; symmetric. Optionally inclined (1:20, 1:30, 1:40) towards the
 //!   track centre and re-origined at the highest point of the inclined head (the Manchester convention).
 #include <memory>
+#include <string>
 
 #include "ctab/profiles/profile.hpp"
 
@@ -27,6 +28,13 @@ struct S1002Value {
 //! The 60E1 head inclined by atan(inclination) towards the track centre (gauge side down), origin at the
 //! highest point of the inclined head. inclination 0 leaves it upright.
 [[nodiscard]] std::shared_ptr<const ProfileCurve> uic60_inclined_curve(double inclination);
+
+//! The built-in profile a name means, in any letter case: "S1002" the wheel, "UIC60" or "60E1" the rail; None: a
+//! profile file.
+enum class BuiltinProfile { None, S1002, Uic60 };
+[[nodiscard]] BuiltinProfile builtin_profile(const std::string& name);
+//! Whether `name` means a built-in profile (builtin_profile is not None).
+[[nodiscard]] bool is_builtin_profile(const std::string& name);
 
 //! Default lateral step of profile tables [m].
 inline constexpr double kProfileTableStep_m = 0.01e-3;

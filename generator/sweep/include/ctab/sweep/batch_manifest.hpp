@@ -40,7 +40,5 @@ struct BatchManifest {
                                                  const std::string& directory);
 //! The base config with the pair's profiles.
 [[nodiscard]] TableConfig pair_config(const BatchManifest& manifest, const ProfilePair& pair);
-//! True for the built-in profile names (S1002; UIC60 or 60E1; any case).
-[[nodiscard]] bool is_builtin_profile(const std::string& spec);
 
 }  // namespace ctab::gen

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 #include "ctab/io/profile_io.hpp"
 #include "ctab/sweep/table_config.hpp"
 #include "ctab/tables/table.hpp"

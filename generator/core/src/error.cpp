@@ -1,4 +1,4 @@
-#include "ctab/contact/error.hpp"
+#include "ctab/core/error.hpp"
 
 #include <sstream>
 

@@ -1,4 +1,4 @@
-#include "ctab/sweep/accuracy_metrics.hpp"
+#include "ctab/validation/accuracy_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>

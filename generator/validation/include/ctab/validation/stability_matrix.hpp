@@ -92,4 +92,11 @@ inline constexpr double kStabilityMaxRoughnessPressureRatio = 0.1;
 //! CSV of the rows (header line first; SI units; empty field for NaN).
 [[nodiscard]] std::string stability_csv(const std::vector<StabilityRow>& rows);
 
+//! The summary table: one line per scene and method, in the rows' order: cases, statuses, claimed and broken
+//! cases, worst error against the reference, worst time, failures by status.
+[[nodiscard]] std::string stability_summary(const std::vector<StabilityRow>& rows);
+
+//! Whether a result holds a non-finite number or a claimed case breaks its error bound.
+[[nodiscard]] bool stability_claims_broken(const std::vector<StabilityRow>& rows);
+
 }  // namespace ctab::gen

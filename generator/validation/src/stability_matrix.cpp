@@ -1,5 +1,5 @@
 // The stability matrix (stability_matrix.hpp): scenes, their references, every rung on every case.
-#include "ctab/sweep/stability_matrix.hpp"
+#include "ctab/validation/stability_matrix.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +10,7 @@
 #include <memory>
 #include <sstream>
 
+#include "bench_text.hpp"
 #include "ctab/contact/gap_profile.hpp"
 #include "ctab/contact/hertz.hpp"
 #include "ctab/contact/material.hpp"
@@ -18,7 +19,7 @@
 #include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/profiles/sampled_points.hpp"
 #include "ctab/profiles/smoothing_spline.hpp"
-#include "ctab/sweep/accuracy_metrics.hpp"
+#include "ctab/validation/accuracy_metrics.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "ctab/wheelrail/wheelrail_geometry.hpp"
 
@@ -91,6 +92,18 @@ bool all_finite(const WheelContact& c) {
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+//! What a solve (NormalSolution or WheelContact) that took `time_s` gave, but for its patch extent.
+template <class Solution>
+Outcome outcome_of(const Solution& s, double time_s) {
+  Outcome o;
+  o.time_s = time_s;
+  o.status = s.status;
+  o.finite = all_finite(s);
+  o.iterations = s.iterations;
+  if (o.finite) o.summary = summarise(s);
+  return o;
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Strip-problem scenes
 
@@ -102,12 +115,7 @@ Solver strip_solver(std::shared_ptr<const GapProfile> gap, Loading loading) {
     options.strip_width_m = width_m;
     const auto start = Clock::now();
     const NormalSolution s = solve_normal_contact(*gap, options, loading);
-    Outcome o;
-    o.time_s = seconds_since(start);
-    o.status = s.status;
-    o.finite = all_finite(s);
-    o.iterations = s.iterations;
-    if (o.finite) o.summary = summarise(s);
+    Outcome o = outcome_of(s, seconds_since(start));
     o.min_patch_extent_m = smallest_loaded_extent_m(patch_extents(s));
     return o;
   };
@@ -245,12 +253,7 @@ Solver wheelrail_solver(std::shared_ptr<const WheelRail> wr, double dy_m, double
     options.mim1d.strip_width_m = width_m;
     const auto start = Clock::now();
     const WheelContact c = solve_wheel_contact(*wr->side, dy_m, 0.0, kEStar, LoadKind::NormalForce, force_N, options);
-    Outcome o;
-    o.time_s = seconds_since(start);
-    o.status = c.status;
-    o.finite = all_finite(c);
-    o.iterations = c.iterations;
-    if (o.finite) o.summary = summarise(c);
+    Outcome o = outcome_of(c, seconds_since(start));
     std::vector<PatchExtent> extents;
     for (const ContactPatch& p : c.patches)
       extents.push_back(patch_extent(p.s_max_m - p.s_min_m, p.normal_force_N, p.strips));
@@ -394,12 +397,6 @@ double relative_error(double value, double reference) {
   return std::abs(value - reference) / reference;
 }
 
-std::string bem2d_name(double width_m) {
-  char name[32];
-  std::snprintf(name, sizeof name, "bem2d_%gmm", width_m * 1e3);
-  return name;
-}
-
 //! The reference of a case: its summary, status, name and the extent of its smallest loaded patch [m].
 struct Reference {
   ContactSummary summary;
@@ -421,7 +418,7 @@ Reference reference_of(const Case& c, const StabilityOptions& options) {
     }
     return r;
   }
-  r.name = bem2d_name(options.reference_width_m);
+  r.name = detail::bem2d_reference_name(options.reference_width_m);
   const Outcome o = c.solve(ContactMethod::Bem2d, options.reference_width_m);
   r.status = o.status;
   if (is_success(o.status) && o.finite) {  // an under-resolved reference still has numbers (and gives no claim)
@@ -429,13 +426,6 @@ Reference reference_of(const Case& c, const StabilityOptions& options) {
     r.min_patch_extent_m = o.min_patch_extent_m;
   }
   return r;
-}
-
-std::string number(double v) {
-  if (!std::isfinite(v)) return "";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
 }
 
 }  // namespace
@@ -556,6 +546,7 @@ double stability_error_bound(const StabilityRow& row) noexcept {
 }
 
 std::string stability_csv(const std::vector<StabilityRow>& rows) {
+  const auto number = detail::csv_number;
   std::ostringstream out;
   out << "scene,case,method,strip_width_m,status,finite,area_error_rel,max_pressure_error_rel,force_error_rel,"
          "error_rel,reference,reference_status,reference_area_m2,resolved_strips,iterations,time_s,claimed,"
