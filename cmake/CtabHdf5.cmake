@@ -3,7 +3,7 @@
 # With CTAB_STATIC_HDF5 (default in our own build) and Debian's archive beside the shared library (libhdf5-dev ships
 # both), HDF5 is linked statically: the shared libhdf5 pulls in about 30 further shared libraries for its S3 driver
 # (curl, TLS, Kerberos, LDAP), whose loading and relocation took 4.5 ms of every `ctab` process start (`ctab
-# --version`: 7.2 -> 3.0 ms, README "Speed"). The archive's own dependencies are linked as needed, so a program
+# --version`: 7.2 -> 3.0 ms, docs/performance.md). The archive's own dependencies are linked as needed, so a program
 # that uses none of the S3 driver loads neither curl nor libcrypto. Every target of the tree links HDF5 through
 # this one target: one program never holds two copies of the library. Installed packages name HDF5::HDF5 (the
 # consumer's find_dependency), never the archive.

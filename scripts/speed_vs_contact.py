@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""ctab's speed against CONTACT and the paper's Matlab MIM-1D (the README "Speed" tables).
+"""ctab's speed against CONTACT and the paper's Matlab MIM-1D (the docs/performance.md tables).
 
 ctab's figures come from `ctab bench solver --json` and `ctab bench wheelrail --json`: run here (--runs times)
 or read from saved files (--solver-json, --wheelrail-json; several files are several runs). CONTACT's CPU

@@ -9,7 +9,7 @@ import csv
 import sys
 from collections import OrderedDict
 
-RESOLVED_STRIPS = 8  # README "Stability where methods fail": the resolution rule of ctab/contact/resolution.hpp
+RESOLVED_STRIPS = 8  # docs/validation.md "Stability where methods fail": the resolution rule of ctab/contact/resolution.hpp
 METHODS = ["hertz", "kp", "analyn", "mim1d", "bem2d"]
 SCENE_TITLES = OrderedDict([
     ("elongated", "elongated a/b 20, 1/20"),

@@ -3,7 +3,7 @@
 N times in turn (N from the environment, default 15), and prints each binary's minimum and median [s]. An entry
 BIN:EXTRA runs BIN with ARGS EXTRA (the same binary on two configs: `build/bin/ctab,build/bin/ctab:planar.toml
 generate -o /tmp/t.h5 --force --quiet`). Interleaving puts the drift of a shared machine on every entry alike
-(README "Speed")."""
+(docs/performance.md)."""
 import os
 import statistics
 import subprocess

@@ -1,5 +1,5 @@
 #pragma once
-//! Exit codes of the ctab executable (README "Exit codes") and the error that maps to the I/O code.
+//! Exit codes of the ctab executable (docs/cli.md "Exit codes") and the error that maps to the I/O code.
 #include "ctab/core/error.hpp"
 
 namespace ctab::cli {

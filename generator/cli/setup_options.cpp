@@ -121,9 +121,10 @@ void add_profile_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added
   add_smoothing_option(
       app, added, "--smoothing", {&c.wheel_smoothing, &c.rail_smoothing},
       "smoothing of point profiles: auto (from the points' noise: the cubic spline of 1 mm when clean, "
-      "the adaptive smoother on noise; README \"Curvature\"), auto-arcs (the same for profiles drawn "
-      "as circular arcs and straight lines, such as new rails: keeps their curvature jumps; README "
-      "\"How to choose the smoothing\") or the cubic spline of a length [m] (0 interpolates)");
+      "the adaptive smoother on noise; docs/method.md \"Curvature and smoothing\"), auto-arcs (the same for profiles "
+      "drawn "
+      "as circular arcs and straight lines, such as new rails: keeps their curvature jumps) "
+      "or the cubic spline of a length [m] (0 interpolates)");
   add_smoothing_option(app, added, "--wheel-smoothing", {&c.wheel_smoothing}, "the wheel's alone (as --smoothing)");
   add_smoothing_option(app, added, "--rail-smoothing", {&c.rail_smoothing}, "the rail's alone (as --smoothing)");
 }
@@ -160,7 +161,7 @@ void add_method_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added)
                        c.least_model = method == "auto";
                        c.method = c.least_model ? gen::NormalMethod::Mim1d : *gen::parse_contact_method(method);
                      },
-                     "normal-contact method (README \"Method ladder\"): " + gen::contact_method_choices() +
+                     "normal-contact method (docs/method.md \"The method ladder\"): " + gen::contact_method_choices() +
                          ", or auto (the least model: MIM-1D at the coarsest strip width within --tolerance)")
                   ->check(CLI::IsMember({"hertz", "kp", "analyn", "mim1d", "bem2d", "auto"}))
                   ->default_str(gen::method_name(c.method)));
@@ -173,32 +174,51 @@ void add_method_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added)
                   ->check(finite_range(kMinStripWidth_m, kMaxStripWidth_m, "m")));
 }
 
+// --reference-point and --reference-angle each change one half of the rule, on top of a config's, in either order;
+// CONTACT's reference point with the tangent is refused whichever comes second.
+[[noreturn]] void refuse_centre_with_tangent() {
+  throw CLI::ValidationError("--reference-angle", "tangent needs --reference-point deepest: CONTACT's reference point "
+                                                  "(interpenetration-centre) takes CONTACT's reference angle");
+}
+
+void set_reference_point(gen::TableConfig& c, bool interpenetration_centre) {
+  const bool tangent = c.reference == gen::ReferenceRule::DeepestTangent;
+  if (interpenetration_centre && tangent) refuse_centre_with_tangent();
+  if (interpenetration_centre) c.reference = gen::ReferenceRule::InterpenetrationCentre;
+  else if (!tangent) c.reference = gen::ReferenceRule::DeepestContactsAngle;
+}
+
+void set_reference_angle(gen::TableConfig& c, gen::ReferenceAngle angle) {
+  const bool centre = c.reference == gen::ReferenceRule::InterpenetrationCentre;
+  if (angle == gen::ReferenceAngle::Tangent && centre) refuse_centre_with_tangent();
+  if (angle == gen::ReferenceAngle::Tangent) c.reference = gen::ReferenceRule::DeepestTangent;
+  else if (!centre) c.reference = gen::ReferenceRule::DeepestContactsAngle;
+}
+
 // Where a patch's contact plane or surface lies: reference point, reference angle, planar or conformal.
 void add_contact_surface_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
   keep(added,
        app.add_option_function<std::string>(
               "--reference-point",
-              [&c](const std::string& name) {
-                c.reference_at_interpenetration_centre = *gen::parse_reference_point(name);
-              },
+              [&c](const std::string& name) { set_reference_point(c, *gen::parse_reference_point(name)); },
               "contact plane of a patch: deepest (rigid deepest point) or interpenetration-centre (CONTACT's rule; "
-              "README \"Flange and flank\")")
+              "docs/validation.md \"Flange and flank\")")
            ->check(CLI::IsMember({std::string(gen::kReferencePointDeepest), std::string(gen::kReferencePointCentre)}))
-           ->default_str(std::string(gen::reference_point_name(c.reference_at_interpenetration_centre))));
+           ->default_str(std::string(gen::reference_point_name(c.reference))));
   keep(added,
        app.add_option_function<std::string>(
               "--reference-angle",
-              [&c](const std::string& name) { c.reference_angle = gen::parse_reference_angle(name); },
+              [&c](const std::string& name) { set_reference_angle(c, *gen::parse_reference_angle(name)); },
               "inclination of a patch's contact plane: tangent (the rail's at the reference point) or "
-              "interpenetration-mean (CONTACT's: the mean over the interpenetration region; README \"Flange and "
-              "flank\")")
+              "interpenetration-mean (CONTACT's: the mean over the interpenetration region; "
+              "docs/validation.md \"Flange and flank\")")
            ->check(CLI::IsMember({std::string(gen::kReferenceAngleTangent), std::string(gen::kReferenceAngleMean)}))
            ->default_str(std::string(gen::kReferenceAngleMean)));
   keep(added,
        app.add_option_function<std::string>(
               "--surface", [&c](const std::string& name) { c.surface = *gen::parse_contact_surface(name); },
               "contact surface of a patch: conformal (curved surface midway between the profiles, one normal per "
-              "strip, CONTACT's conformal approach) or planar (one plane; README \"Flange and flank\")")
+              "strip, CONTACT's conformal approach) or planar (one plane; docs/validation.md \"Flange and flank\")")
            ->check(CLI::IsMember({std::string(gen::kSurfacePlanar), std::string(gen::kSurfaceConformal)}))
            ->default_str(std::string(gen::surface_name(c.surface))));
 }
@@ -235,11 +255,6 @@ std::vector<CLI::Option*> add_setup_options(CLI::App& app, gen::TableConfig& c, 
 
 void finish_setup_options(gen::TableConfig& config) {
   config.inclination = gen::parse_inclination(config.inclination_text, "--inclination", 0, "");
-  if (config.reference_at_interpenetration_centre && config.reference_angle == gen::ReferenceAngle::Tangent)
-    throw gen::InputError(
-        "--reference-angle", 0,
-        "tangent needs --reference-point deepest: CONTACT's reference point (interpenetration-centre) "
-        "takes CONTACT's reference angle");
 }
 
 int sweep_threads(int requested) {

@@ -1,6 +1,6 @@
 // Table::prelookup and Table::query: index search (dy: arithmetic on a uniform axis, on a refined one an index on
 // the smallest step and at most two steps either way; fixed-step binary search on the second axis) and interpolation of
-// every slot's record, with the blending rules of README "Jumps". No allocation, no branch on the table's values, loops
+// every slot's record, with the blending rules of docs/method.md "Tables: sweep, slots, jumps, refined axis". No allocation, no branch on the table's values, loops
 // bounded by the table's sizes only.
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Table::load: copies a validated TableData into one aligned record per case (lookup/include/ctab/lookup/table.hpp)
-// and precomputes, per dy cell and slot, the blending rule (README "Jumps"), the dy index, and with PCHIP the
+// and precomputes, per dy cell and slot, the blending rule (docs/method.md "Tables: sweep, slots, jumps, refined axis"), the dy index, and with PCHIP the
 // Fritsch-Carlson slopes at every node.
 #include <algorithm>
 #include <cmath>

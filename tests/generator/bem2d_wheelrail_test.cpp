@@ -68,9 +68,10 @@ class Bem2dWheelRail : public ctab::test::ManchesterSuite<Case> {
     options.method = NormalMethod::Bem2d;
     options.bem2d_alignment = GridAlignment::CentresAtOrigin;
     if (plane == Plane::Ctab) {
-      options.reference_at_interpenetration_centre = true;
+      options.reference = ReferenceRule::InterpenetrationCentre;
     } else {
       ASSERT_EQ(ref.rows, 1) << c.file << ": one patch at dy " << c.dy_mm;
+      options.reference = ReferenceRule::Prescribed;
       options.prescribed_reference = PrescribedReference{ref.ycp_rail_mm * 1e-3, ref.angle_rad};
     }
     const WheelContact contact = solve_wheel_contact(*side_, c.dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),

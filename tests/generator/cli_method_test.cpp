@@ -196,11 +196,17 @@ TEST(CliMethod, ReferenceAngleInclinesTheDeepestPointsPlane) {
   EXPECT_EQ(centre_table.text_attributes.at("reference_point"), "interpenetration-centre");
   EXPECT_EQ(centre_table.text_attributes.at("reference_angle"), "interpenetration-mean");
 
-  const ctab::test::CtabRun conflict =
-      ctab::test::run_ctab({"solve", "--mode", "wheel", "--dy", "0", "--vertical-load", "78.5e3", "--reference-point",
-                            "interpenetration-centre", "--reference-angle", "tangent"});
-  EXPECT_EQ(conflict.exit_code, 2) << conflict.output();
-  EXPECT_NE(conflict.err.find("--reference-angle"), std::string::npos) << conflict.err;
+  // CONTACT's point with the tangent is refused in either order of the two options.
+  for (const bool point_first : {true, false}) {
+    std::vector<std::string> args{"solve", "--mode", "wheel", "--dy", "0", "--vertical-load", "78.5e3"};
+    const std::vector<std::string> point{"--reference-point", "interpenetration-centre"},
+        angle{"--reference-angle", "tangent"};
+    for (const auto* option : point_first ? std::vector{&point, &angle} : std::vector{&angle, &point})
+      args.insert(args.end(), option->begin(), option->end());
+    const ctab::test::CtabRun conflict = ctab::test::run_ctab(args);
+    EXPECT_EQ(conflict.exit_code, 2) << conflict.output();
+    EXPECT_NE(conflict.err.find("--reference-angle"), std::string::npos) << conflict.err;
+  }
   for (const auto& [text, expected] :
        {std::pair<std::string, std::string>{"reference_point = \"interpenetration-centre\"\nreference_angle = "
                                             "\"tangent\"\n",

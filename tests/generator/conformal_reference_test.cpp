@@ -3,7 +3,7 @@
 // and with the default (the deepest point, its strips centred on CONTACT's reference point) against CONTACT's
 // conformal results (D = 4) at dy = 5.5, 6.5 and 7.5 mm (../shared/reference/contact/wheelrail/flange, issue 8),
 // both loadings. Targets: area 3 %, max pressure 5 %, centre of pressure 0.3 mm, force direction 0.3 deg, lateral
-// force 2 % of the vertical load, p0 profile 5 % RMS; every case meets them with both (README "Flange and flank").
+// force 2 % of the vertical load, p0 profile 5 % RMS; every case meets them with both (docs/validation.md "Flange and flank").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,7 +23,7 @@ namespace {
 // CONTACT's reference rule on the conformal surface.
 WheelRailOptions contacts_rule() {
   WheelRailOptions options;
-  options.reference_at_interpenetration_centre = true;
+  options.reference = ReferenceRule::InterpenetrationCentre;
   options.surface = ContactSurface::Conformal;
   return options;
 }
@@ -73,7 +73,7 @@ TEST_P(ConformalReference, DefaultMatchesContact) {
   const Case c = GetParam();
   const WheelRailOptions defaults;
   ASSERT_EQ(defaults.surface, ContactSurface::Conformal);
-  ASSERT_FALSE(defaults.reference_at_interpenetration_centre);
+  ASSERT_EQ(defaults.reference, ReferenceRule::DeepestContactsAngle);
   const Deviation e = measure(c, defaults);
   ASSERT_GT(e.patches, 0);
   report("conformal, deepest point,", c, e);

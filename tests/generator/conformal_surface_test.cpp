@@ -105,7 +105,7 @@ TEST(StripPlacement, FollowsContactsGridWithItsReferenceRule) {
       for (const double dy_mm : {0.0, 6.5, 7.5}) {
         WheelRailOptions options;
         options.surface = surface;
-        options.reference_at_interpenetration_centre = contacts_rule;
+        if (contacts_rule) options.reference = ReferenceRule::InterpenetrationCentre;
         const WheelContact c = solve_wheel_contact(side, dy_mm * 1e-3, 0.0, effective_modulus(kSteel, kSteel),
                                                    LoadKind::VerticalForce, kLoad_N, options);
         ASSERT_TRUE(is_success(c.status)) << c.detail;

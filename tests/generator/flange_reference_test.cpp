@@ -2,7 +2,7 @@
 // wheel, single-wheel mode, 78.5 kN, 0.2 mm strips) against CONTACT's planar results at dy = 5.5, 6.5 and 7.5 mm
 // (../shared/reference/contact/wheelrail/flange, issue 8), both loadings (vertical load and normal force
 // prescribed). Targets: area 3 %, max pressure 5 %, centre of pressure 0.3 mm, force direction 0.3 deg, lateral
-// force 2 % of the vertical load, p0 profile 5 % RMS; every case meets them (README "Flange and flank").
+// force 2 % of the vertical load, p0 profile 5 % RMS; every case meets them (docs/validation.md "Flange and flank").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,14 +29,14 @@ WheelRailOptions planar() {
 // CONTACT's reference point: the centre of the interpenetration region (WheelRailOptions).
 WheelRailOptions centred_options() {
   WheelRailOptions options = planar();
-  options.reference_at_interpenetration_centre = true;
+  options.reference = ReferenceRule::InterpenetrationCentre;
   return options;
 }
 
 // The deepest point's plane inclined at CONTACT's reference angle (WheelRailOptions::reference_angle).
 WheelRailOptions deepest_at_contacts_angle() {
   WheelRailOptions options = planar();
-  options.reference_angle = ReferenceAngle::InterpenetrationMean;
+  options.reference = ReferenceRule::DeepestContactsAngle;
   return options;
 }
 
@@ -95,7 +95,7 @@ TEST_F(FlangeReference, ContactsAngleAtTheDeepestPointIsCentresAngle) {
     for (double dy : {5.5, 6.5, 7.0, 7.5}) {
       const Case c{loading, dy, "", {}};
       WheelRailOptions tangent_options = planar();
-      tangent_options.reference_angle = ReferenceAngle::Tangent;
+      tangent_options.reference = ReferenceRule::DeepestTangent;
       const WheelContact tangent = solve(c, tangent_options);
       const WheelContact deepest = solve(c, deepest_at_contacts_angle());
       const WheelContact centre = solve(c, centred_options());
@@ -151,7 +151,7 @@ TEST_F(FlangeReference, DefaultKeepsTheDeepestPointAtContactsAngle) {
     return c.patches.front();
   };
   WheelRailOptions tangent = planar();
-  tangent.reference_angle = ReferenceAngle::Tangent;
+  tangent.reference = ReferenceRule::DeepestTangent;
   const ContactPatch by_default = solve(WheelRailOptions{}), at_tangent = solve(tangent),
                      at_centre = solve(centred_options());
   EXPECT_NEAR(at_tangent.plane_angle_rad * kDegPerRad, -69.99, 0.01);

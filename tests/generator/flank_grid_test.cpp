@@ -1,4 +1,4 @@
-// Why ctab's flank area differs from CONTACT's (issue 8, dy 7.5 mm, planar; README "Flange and flank"). The flank
+// Why ctab's flank area differs from CONTACT's (issue 8, dy 7.5 mm, planar; docs/validation.md "Flange and flank"). The flank
 // patch is only 8-11 rows of 0.2 mm wide and CONTACT's area counts whole elements (ncon dx ds), which on so narrow a
 // patch lies 5-9 % above the continuum. Two independent checks:
 // - CONTACT's own rows describe a Hertzian ellipse (straight wheel flank on the rail's 13 mm arc): the row loads
@@ -28,7 +28,7 @@ class FlankGrid : public ctab::test::ManchesterSuite<const char*> {
     WheelRailOptions options;
     options.surface = ContactSurface::Planar;  // CONTACT's planar results
     options.bem2d_element_length_m = length_m;
-    options.reference_at_interpenetration_centre = true;  // CONTACT's rule, as flange_reference_test
+    options.reference = ReferenceRule::InterpenetrationCentre;  // CONTACT's rule, as flange_reference_test
     options.method = method;
     options.mim1d.strip_width_m = width_m;
     options.bem2d_alignment = GridAlignment::CentresAtOrigin;  // CONTACT's wheel-rail grid

@@ -395,7 +395,7 @@ void print_report() {
 }
 
 // Issue 8: 5 um noise gives the clean profile's patch count, area within 5 % and max pressure within 5 %, with the
-// smoothing README "How to choose the smoothing" gives for the profile: `auto` for S1002 (3 seeds: 2.8 % and 3.1 %),
+// smoothing docs/method.md "Curvature and smoothing" gives for the profile: `auto` for S1002 (3 seeds: 2.8 % and 3.1 %),
 // `auto-arcs` for 60E1, drawn as arcs (1.3 % and 2.6 %). With `auto` the rail's contacts that straddle the crown's
 // R300/R80 junction (dy 0 ... +1 mm) read max pressure within 16 % (14.5 %: the smooth prior spreads that 9.2 1/m
 // jump over several millimetres); with `auto-arcs` S1002's polynomial tread is read as arcs (max pressure 30.2 %).

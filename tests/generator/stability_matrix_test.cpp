@@ -83,7 +83,7 @@ TEST(StabilityMatrix, QuickSubsetIsFiniteAndHonest) {
   EXPECT_GE(under_resolved_rows(rows), 3);  // F = 1 N: kp, analyn and mim1d report under-resolved
 }
 
-// The claims: where they apply and their bounds (README "Stability where methods fail").
+// The claims: where they apply and their bounds (docs/validation.md "Stability where methods fail").
 TEST(StabilityMatrix, ClaimsFollowTheStatedDomain) {
   StabilityRow row;
   row.scene = "load";

@@ -264,3 +264,30 @@ TEST(TableConfig, RefinedTableKeepsTheCoarseRowsAndTheMirrorOnlyWhenSymmetric) {
         }
     }
 }
+
+// [solver] reference_point and reference_angle make one ReferenceRule; the angle defaults to CONTACT's for both points.
+TEST(TableConfig, ReferencePointAndAngleMakeOneRule) {
+  const auto rule = [](const std::string& solver) {
+    return parse_table_config("[solver]\nmode = \"wheel\"\n" + solver +
+                                  "[axes]\nlateral_displacement_m = { start = 0.0, stop = 1e-3, step = 1e-3 }\n"
+                                  "vertical_load_N = 78.5e3\n",
+                              "reference.toml")
+        .reference;
+  };
+  EXPECT_EQ(rule(""), ReferenceRule::DeepestContactsAngle);
+  EXPECT_EQ(rule("reference_angle = \"tangent\"\n"), ReferenceRule::DeepestTangent);
+  EXPECT_EQ(rule("reference_point = \"deepest\"\nreference_angle = \"interpenetration-mean\"\n"),
+            ReferenceRule::DeepestContactsAngle);
+  EXPECT_EQ(rule("reference_point = \"interpenetration-centre\"\n"), ReferenceRule::InterpenetrationCentre);
+  EXPECT_EQ(rule("reference_point = \"interpenetration-centre\"\nreference_angle = \"interpenetration-mean\"\n"),
+            ReferenceRule::InterpenetrationCentre);
+  try {
+    (void)rule("reference_point = \"interpenetration-centre\"\nreference_angle = \"tangent\"\n");
+    ADD_FAILURE() << "CONTACT's point with the tangent accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"tangent\" needs reference_point"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(reference_rule(true, ReferenceAngle::Tangent).has_value());
+  EXPECT_EQ(reference_angle_name(ReferenceRule::InterpenetrationCentre), "interpenetration-mean");
+  EXPECT_EQ(reference_point_name(ReferenceRule::DeepestTangent), "deepest");
+}

@@ -231,7 +231,7 @@ TEST(WarmStart, ExtrapolationIsLinearByStripIndex) {
 // last two (with their strip loads) the 0.01 mm chains need fewer MIM-1D iterations than from the last one alone.
 TEST(WarmStart, ExtrapolatedChainNeedsFewerIterationsWithTheCentreRule) {
   TableConfig config = fine_config(true);
-  config.reference_at_interpenetration_centre = true;
+  config.reference = ReferenceRule::InterpenetrationCentre;
   const SweepSetup setup = make_sweep_setup(config);
   WheelContactWorkspace workspace;
   int extrapolated = 0, last_only = 0;

@@ -133,10 +133,10 @@ TEST_P(WheelRailContact, PlaneMatchesContactsWithItsReferenceRuleOrAngle) {
   ASSERT_TRUE(ref.found);
   WheelRailOptions centre, deepest_at_contacts_angle;
   centre.surface = deepest_at_contacts_angle.surface = ContactSurface::Planar;  // a plane's identities
-  centre.reference_at_interpenetration_centre = true;
-  deepest_at_contacts_angle.reference_angle = ReferenceAngle::InterpenetrationMean;
+  centre.reference = ReferenceRule::InterpenetrationCentre;
+  deepest_at_contacts_angle.reference = ReferenceRule::DeepestContactsAngle;
   for (const WheelRailOptions& options : {centre, deepest_at_contacts_angle}) {
-    SCOPED_TRACE(options.reference_at_interpenetration_centre ? "CONTACT's rule" : "deepest point, CONTACT's angle");
+    SCOPED_TRACE(options.at_interpenetration_centre() ? "CONTACT's rule" : "deepest point, CONTACT's angle");
     expect_contacts_plane(c, *side_, options, ref.angle_rad * 180 / M_PI, ref.area_mm2, ref.pmax_MPa);
   }
 }

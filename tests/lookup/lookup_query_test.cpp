@@ -164,7 +164,7 @@ TEST(LookupQuery, StripProfileFollowsTheSlotRules) {
 namespace ctab::lookup {
 namespace {
 
-// A locally refined dy axis (tables/README "Axes"): 0.1 mm steps between 5 and 7.5 mm in a 1 mm table.
+// A locally refined dy axis (tables/docs/method.md "Tables: sweep, slots, jumps, refined axis"): 0.1 mm steps between 5 and 7.5 mm in a 1 mm table.
 TableData refined_synthetic() {
   return make_synthetic({.refine_from_m = 5e-3, .refine_to_m = 7.5e-3, .refine_step_m = 0.1e-3});
 }

@@ -18,7 +18,7 @@ struct DeepestPoint {
   double y_first = 0.0, y_last = 0.0;  // extent of the gap data [m]
 };
 
-// Lateral curvature rule (README "Method ladder", hertz): the local B at the contact point when B >= A/20;
+// Lateral curvature rule (docs/method.md "The method ladder", hertz): the local B at the contact point when B >= A/20;
 // otherwise (negative, i.e. concave, or nearly flat) the patch-mean lateral curvature, floored at A/20 unless the
 // gap is convex across the patch (local B > 0 and the mean at least half of it: then the mean, unfloored).
 constexpr double kCurvatureRatioLimit = 20.0;       // B >= A/20: CONTACT's R_y <= 20 R_x rule

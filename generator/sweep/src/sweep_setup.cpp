@@ -77,8 +77,7 @@ SweepSetup make_sweep_setup(const TableConfig& config) {
   setup.options.method = config.method;
   setup.auto_tolerance = config.least_model ? config.tolerance : 0.0;
   setup.options.mim1d.strip_width_m = config.strip_width_m;  // range checked by the config
-  setup.options.reference_at_interpenetration_centre = config.reference_at_interpenetration_centre;
-  setup.options.reference_angle = config.reference_angle;
+  setup.options.reference = config.reference;
   setup.options.surface = config.surface;
   setup.mode = config.mode;
   setup.load_kind = config.load_kind;

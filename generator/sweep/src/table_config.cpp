@@ -38,13 +38,13 @@ poisson_ratio = 0.3
 
 [solver]
 mode = "wheelset"        # "wheelset" (rigid roll, both wheels touching) or "wheel" (single wheel, roll 0)
-method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (README "Method ladder")
+method = "mim1d"         # "hertz", "kp", "analyn", "mim1d" or "bem2d" (docs/method.md "The method ladder")
 strip_width_m = 0.2e-3
 reference_point = "deepest"  # contact plane at the deepest point, or "interpenetration-centre" (CONTACT's rule)
 reference_angle = "interpenetration-mean"  # plane inclination: CONTACT's mean over the interpenetration region,
-                                          # or "tangent" (the rail's at the deepest point; README "Flange and flank")
+                                          # or "tangent" (the rail's at the deepest point; docs/validation.md)
 surface = "conformal"    # contact surface: "conformal" (curved, CONTACT D=4) or "planar" (one plane per patch)
-warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; README "Speed")
+warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; docs/performance.md)
 
 [axes]
 lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.1e-3 }
@@ -271,18 +271,19 @@ void read_solver(const Reader& r, TableConfig& c) {
     r.fail(*r.find("solver", "reference_point"), "solver.reference_point",
            "expected \"deepest\" or \"interpenetration-centre\", got \"" + r.text("solver", "reference_point", "") +
                "\"");
-  c.reference_at_interpenetration_centre = *centre;
+  std::optional<ReferenceAngle> angle;
   if (const toml::node* node = r.find("solver", "reference_angle")) {
     const std::string name = r.text("solver", "reference_angle", "");
-    c.reference_angle = parse_reference_angle(name);
-    if (!c.reference_angle)
+    angle = parse_reference_angle(name);
+    if (!angle)
       r.fail(*node, "solver.reference_angle",
              "expected \"tangent\" or \"interpenetration-mean\", got \"" + name + "\"");
-    if (*centre && c.reference_angle == ReferenceAngle::Tangent)
+    if (!reference_rule(*centre, angle))
       r.fail(*node, "solver.reference_angle",
              "\"tangent\" needs reference_point = \"deepest\": CONTACT's reference point (\"interpenetration-centre\") "
              "takes CONTACT's reference angle");
   }
+  c.reference = *reference_rule(*centre, angle);
   const std::optional<ContactSurface> surface = parse_contact_surface(r.text("solver", "surface", "conformal"));
   if (!surface)
     r.fail(*r.find("solver", "surface"), "solver.surface",

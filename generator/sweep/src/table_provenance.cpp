@@ -59,8 +59,8 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["mode"] = config.mode == ContactMode::Wheelset ? "wheelset" : "wheel";
   text["method"] = config.least_model ? "auto" : method_name(config.method);  // per case: /wheels/method
   text["surface"] = std::string(surface_name(config.surface));
-  text["reference_point"] = std::string(reference_point_name(config.reference_at_interpenetration_centre));
-  text["reference_angle"] = std::string(reference_angle_name(setup.options));
+  text["reference_point"] = std::string(reference_point_name(config.reference));
+  text["reference_angle"] = std::string(reference_angle_name(config.reference));
   text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;

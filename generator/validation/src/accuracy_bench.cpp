@@ -62,7 +62,7 @@ struct Rung {
   double tolerance = 0.0;  //!< > 0: the least model (`--method auto --tolerance`), MIM-1D at widths of its choice [-]
 };
 
-//! The least model's tolerance in the wheel-rail scene (the example, README "The least model") [-].
+//! The least model's tolerance in the wheel-rail scene (the example, docs/validation.md "The least model") [-].
 constexpr double kLeastModelTolerance = 0.02;
 
 std::vector<Rung> rungs(bool quick) {

@@ -5,12 +5,12 @@ namespace ctab::gen {
 ShiftedSide shifted_side(const WheelCase& c) { return {c.side, c.dy_m, c.roll_rad, c.result.first_contact_z_m}; }
 
 bool follows_centre(const WheelCase& c) {
-  return !c.options.prescribed_reference && !c.recentring &&
-         (c.options.interpenetration_mean_angle() || centres_conformal_grid(c.options));
+  return c.options.reference != ReferenceRule::Prescribed && !c.recentring &&
+         (c.options.takes_contacts_angle() || centres_conformal_grid(c.options));
 }
 
 bool centres_conformal_grid(const WheelRailOptions& options) {
-  return options.surface == ContactSurface::Conformal && !options.reference_at_interpenetration_centre;
+  return options.surface == ContactSurface::Conformal && !options.at_interpenetration_centre();
 }
 
 bool centre_at(WheelCase& c, double x, GapMinimum& centre) {
@@ -28,11 +28,11 @@ void follow_interpenetration_centre(WheelCase& c, PatchProblem& main) {
   if (!follows_centre(c)) return;
   GapMinimum centre;
   if (!centre_at(c, main.gap_dz, centre)) return;
-  if (c.options.reference_at_interpenetration_centre) {
+  if (c.options.at_interpenetration_centre()) {
     main.reference = centre;
     return;
   }
-  if (c.options.interpenetration_mean_angle()) main.reference.contact_angle_rad = centre.contact_angle_rad;
+  if (c.options.takes_contacts_angle()) main.reference.contact_angle_rad = centre.contact_angle_rad;
   if (centres_conformal_grid(c.options)) main.origin_y = centre.rail_y_m;
 }
 

@@ -60,8 +60,7 @@ class GapPasses {
   // the cold start's path: x settles anywhere within kGapApproachTolerance_m of the fixed point, so a chained start
   // would make warm and cold tables differ by more than the solver's tolerance.
   void start() {
-    const double chained_x = c_.options.reference_at_interpenetration_centre && !c_.options.prescribed_reference &&
-                                     c_.warm != nullptr && !c_.ws.chain_start.empty()
+    const double chained_x = c_.options.at_interpenetration_centre() && c_.warm != nullptr && !c_.ws.chain_start.empty()
                                  ? c_.ws.chain_start.sampling_approach_m
                                  : 0.0;
     const double start_x = c_.result.vertical_approach_m > 0.0 ? c_.result.vertical_approach_m : chained_x;

@@ -10,7 +10,7 @@
 namespace ctab::gen {
 
 GridAlignment strip_alignment(const WheelRailOptions& options) {
-  return options.reference_at_interpenetration_centre || options.surface == ContactSurface::Conformal
+  return options.at_interpenetration_centre() || options.surface == ContactSurface::Conformal
              ? GridAlignment::CentresAtOrigin
              : GridAlignment::EdgesAtOrigin;
 }

@@ -33,13 +33,12 @@ std::string invalid_input(const WheelCase& c) {
   if (!std::isfinite(c.roll_rad)) return "roll angle is not finite";
   if (!std::isfinite(c.load_value)) return "load is not finite";
   if (c.load_value < 0.0) return c.load == LoadKind::Approach ? "negative approach" : "negative load";
-  if (options.reference_at_interpenetration_centre && options.reference_angle == ReferenceAngle::Tangent)
-    return "CONTACT's reference point (the interpenetration centre) takes CONTACT's reference angle, not the tangent";
-  if (const auto& reference = options.prescribed_reference) {
+  if (options.reference == ReferenceRule::Prescribed) {
+    const PrescribedReference& reference = options.prescribed_reference;
     if (options.surface != ContactSurface::Planar) return "a prescribed reference point needs the planar surface";
-    if (!std::isfinite(reference->contact_angle_rad) || !c.side.rail().contains(reference->rail_y_m))
-      return "the prescribed reference point (rail y " + number_text(reference->rail_y_m) + " m, angle " +
-             number_text(reference->contact_angle_rad) + " rad) is not on the rail profile";
+    if (!std::isfinite(reference.contact_angle_rad) || !c.side.rail().contains(reference.rail_y_m))
+      return "the prescribed reference point (rail y " + number_text(reference.rail_y_m) + " m, angle " +
+             number_text(reference.contact_angle_rad) + " rad) is not on the rail profile";
   }
   return {};
 }
@@ -60,9 +59,9 @@ bool find_rigid_contact(WheelCase& c) {
 // The main patch's reference point: the deepest gap minimum, or the prescribed point (WheelRailOptions).
 GapMinimum main_reference(WheelCase& c) {
   GapMinimum point = c.ws.minima[0];
-  if (!c.options.prescribed_reference) return point;
-  point.rail_y_m = c.options.prescribed_reference->rail_y_m;
-  point.contact_angle_rad = c.options.prescribed_reference->contact_angle_rad;
+  if (c.options.reference != ReferenceRule::Prescribed) return point;
+  point.rail_y_m = c.options.prescribed_reference.rail_y_m;
+  point.contact_angle_rad = c.options.prescribed_reference.contact_angle_rad;
   const WheelSurfacePoint w = c.builder.wheel_at(point.rail_y_m, point.wheel_s_m);
   point.rolling_radius_m = w.radius_m;
   return point;
@@ -94,7 +93,7 @@ SolveStatus solve_main_patch(WheelCase& c, double depth, const GapMinimum& refer
 // are secant steps on the fixed point c = C(c) (C: the centre at the approach solved in the plane at c): where one
 // region spans tread and flange root C has a slope near -1, where plain re-solves alternate between two centres.
 SolveStatus recentre_main_patch(WheelCase& c, double depth) {
-  if (!c.options.reference_at_interpenetration_centre || c.options.prescribed_reference) return SolveStatus::Converged;
+  if (!c.options.at_interpenetration_centre()) return SolveStatus::Converged;
   GapMinimum previous_at{}, previous_centre{};
   for (int pass = 0; pass < kRecentrePasses; ++pass) {
     const GapMinimum at = c.ws.pool[0].reference;

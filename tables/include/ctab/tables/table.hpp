@@ -3,7 +3,7 @@
 //! Layout and units are documented in tables/README.md; every array is row-major (C order) with the shape
 //! given next to it. SI units throughout (m, N, Pa, rad).
 //!
-//! Frames. Each wheel's quantities are in its own side frame (README "Track and wheelset"): y lateral, + towards
+//! Frames. Each wheel's quantities are in its own side frame (docs/method.md "Track, wheelset and rigid geometry"): y lateral, + towards
 //! the field side of that rail; z vertical, + downwards. Forces are those of the wheel on the rail.
 //! Identity (tested on every case of a table): for the vertical-load axis, sum over a wheel's present patches of
 //! force_vertical_N equals the prescribed vertical load to 1e-9 relative; for the normal-load axis the sum of

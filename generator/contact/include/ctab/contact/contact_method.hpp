@@ -1,5 +1,5 @@
 #pragma once
-//! The rungs of the method ladder (README "Method ladder"), their names on the command line, in configs and in
+//! The rungs of the method ladder (docs/method.md "The method ladder"), their names on the command line, in configs and in
 //! table attributes. Eigen-free, so that configurations and the CLI can hold a method.
 #include <cstdint>
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-//! Resolution of a discretised rung's result (README "Stability where methods fail"): with fewer than
+//! Resolution of a discretised rung's result (docs/validation.md "Stability where methods fail"): with fewer than
 //! kMinResolvedStrips strips (elements) across the smallest loaded patch the stability matrix measured MIM-1D up to
 //! 38 % and bem2d up to 183 % off their references, so such a result carries SolveStatus::UnderResolved.
 #include <vector>

@@ -20,7 +20,7 @@
 //! and frees the penalty of the one window that straddles each, so the curvature jumps there, then smooths the arcs
 //! between the junctions with 1.5 times the length and a penalty on the departure from a circle (kArcLengthFactor). On a
 //! profile that is not made of arcs (S1002's polynomial tread) the arcs prior finds a junction every few mm and is
-//! worse than the smooth prior (README "How to choose the smoothing").
+//! worse than the smooth prior (docs/method.md "Curvature and smoothing").
 #include <cstddef>
 #include <vector>
 

@@ -53,12 +53,10 @@ struct TableConfig {
   //! Mim1d and strip_width_m unused. [solver] tolerance: its error tolerance (0 < T < 1, default 0.02) [-].
   bool least_model = false;
   double tolerance = 0.02;
-  //! [solver] reference_point: "deepest" (false, the default) or "interpenetration-centre" (true, CONTACT's rule):
-  //! where a patch's contact plane is placed (WheelRailOptions::reference_at_interpenetration_centre).
-  bool reference_at_interpenetration_centre = false;
-  //! [solver] reference_angle: "tangent" or "interpenetration-mean" (CONTACT's); absent: the reference point's own
-  //! (WheelRailOptions::reference_angle).
-  std::optional<ReferenceAngle> reference_angle;
+  //! [solver] reference_point ("deepest", the default, or "interpenetration-centre", CONTACT's rule) and
+  //! reference_angle ("interpenetration-mean", CONTACT's and the default, or "tangent"; CONTACT's point takes only
+  //! CONTACT's angle): where a patch's contact plane lies and how it is inclined (WheelRailOptions::reference).
+  ReferenceRule reference = ReferenceRule::DeepestContactsAngle;
   //! [solver] surface: "conformal" (the default) or "planar" (WheelRailOptions::surface).
   ContactSurface surface = ContactSurface::Conformal;
   //! [solver] warm_start: each MIM-1D solve starts from its neighbour in dy, in fixed chains of rows

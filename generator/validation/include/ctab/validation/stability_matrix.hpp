@@ -1,5 +1,5 @@
 #pragma once
-//! The stability matrix (`ctab bench stability`, README "Stability where methods fail"): every rung of the method
+//! The stability matrix (`ctab bench stability`, docs/validation.md "Stability where methods fail"): every rung of the method
 //! ladder on hard scenes, each case recorded with its status, error against a reference, iterations and time.
 //!
 //! Scenes (strip problems unless "wheel-rail"):

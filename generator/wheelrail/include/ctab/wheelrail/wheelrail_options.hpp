@@ -27,10 +27,30 @@ enum class ContactSurface : std::int8_t {
   Conformal = 1,  //!< a curved surface midway between rail and wheel, s its arc length, one normal per strip
 };
 
-//! The inclination of a patch's contact plane, its reference angle (WheelRailOptions::reference_angle).
+//! The inclination of a patch's contact plane as the config and CLI name it ([solver] reference_angle,
+//! --reference-angle); with the reference point it makes the ReferenceRule.
 enum class ReferenceAngle : std::int8_t {
   Tangent = 0,               //!< the rail's inclination at the reference point
   InterpenetrationMean = 1,  //!< CONTACT's: the mean of the rail's inclination over the interpenetration region
+};
+
+//! Where the main patch's contact plane lies and how it is inclined (WheelRailOptions::reference). CONTACT's
+//! reference point is the centre of the interpenetration region at the solved approach (weights pen^(5/2)); its
+//! reference angle is the weighted mean of the rail's inclination over that region (docs/method.md "Contact search
+//! and patches"; docs/validation.md "Flange and flank" for what each rule moves against CONTACT).
+enum class ReferenceRule : std::int8_t {
+  //! The deepest rigid point, the plane tangent to the rail there.
+  DeepestTangent = 0,
+  //! The deepest rigid point, the plane inclined at CONTACT's reference angle, taken at each gap pass's sampling
+  //! approach (the default: CONTACT's force direction within 0.013 deg on its flange cases, where the tangent misses
+  //! by up to 2.8 deg). The conformal surface centres its strip grid on CONTACT's reference point.
+  DeepestContactsAngle = 1,
+  //! CONTACT's rule: the plane through CONTACT's reference point at CONTACT's reference angle (a region spanning
+  //! tread and flange root is one plane, as CONTACT combines them).
+  InterpenetrationCentre = 2,
+  //! The point and angle of WheelRailOptions::prescribed_reference (planar surface only): for solving the same
+  //! problem as another program, e.g. bem2d in CONTACT's own plane (bem2d_wheelrail_test).
+  Prescribed = 3,
 };
 
 //! A contact reference point given from outside (WheelRailOptions::prescribed_reference).
@@ -39,39 +59,26 @@ struct PrescribedReference {
   double contact_angle_rad = 0.0;  //!< inclination of the contact plane (negative on the gauge side) [rad]
 };
 
-//! The rung of the method ladder (contact_method.hpp); the earlier name, same values.
+//! The rung of the method ladder (contact_method.hpp).
 using NormalMethod = ContactMethod;
 
 struct WheelRailOptions {
   NormalMethod method = NormalMethod::Mim1d;
   Mim1dOptions mim1d;             //!< strip width, curvature treatment, tolerances
   double sample_step_m = 0.1e-3;  //!< sampling of h(s) in the contact plane [m]
-  //! Contact reference point (plane of the main patch): false = the deepest rigid point (the default, as the tables
-  //! were validated); true = CONTACT's rule, the centre of the interpenetration region at the solved approach
-  //! (weights pen^(5/2)), the plane inclined at the weighted mean of the rail's inclination over the region (a
-  //! region spanning tread and flange root is one plane, as CONTACT combines them); it meets CONTACT's reference
-  //! angle within 0.012 deg (flange_reference_test). On the flange flank (rail arc against the straight 70 deg wheel
-  //! flank) the deepest point stays where the rail slope is -70 deg (-69.99 deg for every dy 6.7-7.6 mm, CONTACT
-  //! -68.6 to -69.4 deg); on a flat tread it sits up to 3 mm from the centre (0.6 deg at dy 0). Not the default
-  //! (README "Flange and flank": what switching it moves); the conformal surface at the deepest point (the default)
-  //! centres its strips on this centre and keeps the deepest point as the contact point.
-  bool reference_at_interpenetration_centre = false;
-  //! Reference angle (config [solver] reference_angle, CLI --reference-angle); unset: InterpenetrationMean, CONTACT's
-  //! reference angle (the default since the seventh session; Tangent with CONTACT's centre is invalid input).
-  //! InterpenetrationMean at the deepest point: the plane through the deepest point inclined at CONTACT's reference
-  //! angle, taken at each gap pass's sampling approach (no re-centring: a plane's gap does not depend on the point it
-  //! passes through, only the strip grid's origin does). On CONTACT's flange cases it meets its force direction
-  //! within 0.013 deg where the tangent (the rail's inclination at the deepest point, the earlier default) misses by
-  //! up to 2.8 deg (README "Flange and flank").
-  std::optional<ReferenceAngle> reference_angle;
-  //! Whether the main patch's plane takes CONTACT's reference angle (the mean over the interpenetration region).
-  [[nodiscard]] bool interpenetration_mean_angle() const noexcept {
-    return reference_at_interpenetration_centre || reference_angle != ReferenceAngle::Tangent;
+  //! Contact reference point and angle of the main patch (config [solver] reference_point and reference_angle, CLI
+  //! --reference-point and --reference-angle).
+  ReferenceRule reference = ReferenceRule::DeepestContactsAngle;
+  [[nodiscard]] bool at_interpenetration_centre() const noexcept {
+    return reference == ReferenceRule::InterpenetrationCentre;
   }
-  //! Contact surface (config [solver] surface, CLI --surface): conformal (the default since the eleventh session:
-  //! CONTACT's conformal approach, D = 4, its strips centred on CONTACT's reference point; every CONTACT flange case
-  //! within issue 8's targets) or planar (one plane per patch, 1.3-1.4x cheaper per table; README "Flange and
-  //! flank").
+  //! Whether the main patch's plane takes CONTACT's reference angle (the mean over the interpenetration region).
+  [[nodiscard]] bool takes_contacts_angle() const noexcept {
+    return reference == ReferenceRule::DeepestContactsAngle || reference == ReferenceRule::InterpenetrationCentre;
+  }
+  //! Contact surface (config [solver] surface, CLI --surface): conformal (the default: CONTACT's conformal approach,
+  //! D = 4, its strips centred on CONTACT's reference point; every CONTACT flange case within the validation targets)
+  //! or planar (one plane per patch, about 1.3x cheaper per table; docs/validation.md "Flange and flank").
   ContactSurface surface = ContactSurface::Conformal;
   //! bem2d's element placement in the patch frame (bem2d_options.hpp). CentresAtOrigin is CONTACT's wheel-rail grid
   //! (rows at s = k ds from the reference point, an element at x = 0); with CONTACT's reference point it is the
@@ -80,12 +87,9 @@ struct WheelRailOptions {
   GridAlignment bem2d_alignment = GridAlignment::EdgesAtOrigin;
   //! bem2d's element length along x [m]; 0 = square elements of the strip width (MethodOptions).
   double bem2d_element_length_m = 0.0;
-  //! The main patch's plane through the rail point at rail_y_m, inclined at contact_angle_rad, instead of ctab's
-  //! own reference point (and no re-centring). For solving the same problem as another program: with CONTACT's
-  //! reference point and angle from its output, bem2d is compared with CONTACT on identical geometry
-  //! (bem2d_wheelrail_test). Planar surface only; a gap minimum outside the main patch's window still opens a patch
-  //! of its own at its own reference point.
-  std::optional<PrescribedReference> prescribed_reference;
+  //! The main patch's plane through this rail point at this angle where reference is ReferenceRule::Prescribed (no
+  //! re-centring); a gap minimum outside the main patch's window still opens a patch at its own reference point.
+  PrescribedReference prescribed_reference;
 };
 
 //! Names of the contact surfaces (config [solver] surface, CLI --surface).
@@ -107,7 +111,7 @@ inline constexpr std::string_view kSurfaceConformal = "conformal";
 inline constexpr std::string_view kReferencePointDeepest = "deepest";
 inline constexpr std::string_view kReferencePointCentre = "interpenetration-centre";
 
-//! "deepest" -> false, "interpenetration-centre" -> true (reference_at_interpenetration_centre); else nullopt.
+//! "deepest" -> false, "interpenetration-centre" -> true (CONTACT's reference point); else nullopt.
 [[nodiscard]] inline std::optional<bool> parse_reference_point(std::string_view name) noexcept {
   if (name == kReferencePointDeepest) return false;
   if (name == kReferencePointCentre) return true;
@@ -125,13 +129,21 @@ inline constexpr std::string_view kReferenceAngleMean = "interpenetration-mean";
   return std::nullopt;
 }
 
-//! The names of a reference point and angle as a table's provenance gives them (the angle resolved: unset is the
-//! point's own).
-[[nodiscard]] inline std::string_view reference_point_name(bool interpenetration_centre) noexcept {
-  return interpenetration_centre ? kReferencePointCentre : kReferencePointDeepest;
+//! The rule of a reference point and an optional angle (unset: CONTACT's); nullopt for CONTACT's reference point
+//! with the tangent, which is not a rule (CONTACT's point takes CONTACT's angle).
+[[nodiscard]] inline std::optional<ReferenceRule> reference_rule(bool interpenetration_centre,
+                                                                 std::optional<ReferenceAngle> angle) noexcept {
+  const bool tangent = angle == ReferenceAngle::Tangent;
+  if (interpenetration_centre) return tangent ? std::nullopt : std::optional(ReferenceRule::InterpenetrationCentre);
+  return tangent ? ReferenceRule::DeepestTangent : ReferenceRule::DeepestContactsAngle;
 }
-[[nodiscard]] inline std::string_view reference_angle_name(const WheelRailOptions& options) noexcept {
-  return options.interpenetration_mean_angle() ? kReferenceAngleMean : kReferenceAngleTangent;
+
+//! The names of a rule's reference point and angle as the config and a table's provenance give them.
+[[nodiscard]] inline std::string_view reference_point_name(ReferenceRule rule) noexcept {
+  return rule == ReferenceRule::InterpenetrationCentre ? kReferencePointCentre : kReferencePointDeepest;
+}
+[[nodiscard]] inline std::string_view reference_angle_name(ReferenceRule rule) noexcept {
+  return rule == ReferenceRule::DeepestTangent ? kReferenceAngleTangent : kReferenceAngleMean;
 }
 
 }  // namespace ctab::gen
