@@ -101,7 +101,7 @@ Settings make_settings(bool quick) {
   return s;
 }
 
-//! Contact region of a lateral shift (issue 8's ranges): tread below 4.5 mm, two-point to 5.75 mm, flange root
+//! Contact region of a lateral shift: tread below 4.5 mm, two-point to 5.75 mm, flange root
 //! to 6.75 mm, flange flank beyond.
 const char* wheelrail_region(double dy_m) {
   if (dy_m < 4.5e-3) return "tread";
