@@ -5,6 +5,8 @@
 #include <string>
 
 #include "ctab/lookup/blob.hpp"
+#include "ctab/tables/limits.hpp"
+#include "load_guard.hpp"
 
 namespace ctab::lookup {
 
@@ -12,7 +14,7 @@ namespace {
 
 constexpr std::size_t kCountsBytes = 32;  // eight u32 at the start of the payload
 constexpr std::size_t kJumpBytes = 12;
-constexpr std::uint32_t kMaxAxis = 1u << 24;  // refuse absurd counts before multiplying them
+constexpr std::size_t kReservedHeaderOffset = 40;  // header bytes 40..63: zero
 
 void store_le(unsigned char* at, std::uint64_t v, int bytes) noexcept {
   for (int i = 0; i < bytes; ++i) at[i] = static_cast<unsigned char>(v >> (8 * i));
@@ -97,6 +99,17 @@ bool looks_like_hdf5(const void* bytes, std::size_t size) noexcept {
   return size >= 8 && std::memcmp(bytes, kSignature, 8) == 0;
 }
 
+LoadResult write_blob(const TableData& data, bool single, std::vector<unsigned char>& blob) {
+  blob.clear();
+  return detail::guard_allocation([&] {
+    LoadResult checked = validate(data);
+    if (checked.ok() && single) checked = check_float_range(data);
+    if (!checked.ok()) return fail(checked.status, "cannot write: " + checked.message);
+    blob = write_blob(data, single);
+    return LoadResult{};
+  });
+}
+
 std::vector<unsigned char> write_blob(const TableData& data, bool single) {
   const std::size_t value_bytes = single ? 4 : 8;
   std::vector<unsigned char> blob(kBlobHeaderBytes, 0);  // header filled in at the end
@@ -135,7 +148,9 @@ std::vector<unsigned char> write_blob(const TableData& data, bool single) {
   return blob;
 }
 
-LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool& single) {
+namespace {
+
+LoadResult parse_blob(const void* bytes, std::size_t size, TableData& data, bool& single) {
   if (bytes == nullptr || size < kBlobHeaderBytes || std::memcmp(bytes, kBlobMagic, 8) != 0)
     return fail(CTAB_ERR_NOT_A_TABLE, "not a ctab blob (no CTABBLOB magic) or shorter than its header");
   const auto* p = static_cast<const unsigned char*>(bytes);
@@ -148,6 +163,8 @@ LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool&
     return fail(CTAB_ERR_VERSION, "table schema " + std::to_string(schema) + ", expected 2");
   if ((value_bytes != 4 && value_bytes != 8) || header_bytes != kBlobHeaderBytes)
     return fail(CTAB_ERR_NOT_A_TABLE, "bad value size or header size");
+  for (std::size_t i = kReservedHeaderOffset; i < kBlobHeaderBytes; ++i)
+    if (p[i] != 0) return fail(CTAB_ERR_NOT_A_TABLE, "header byte " + std::to_string(i) + " is reserved and not zero");
   if (payload_size != size - kBlobHeaderBytes) return fail(CTAB_ERR_NOT_A_TABLE, "truncated or padded: size mismatch");
   const unsigned char* payload = p + kBlobHeaderBytes;
   if (fnv1a64(payload, payload_size) != checksum) return fail(CTAB_ERR_CHECKSUM, "payload checksum mismatch");
@@ -157,12 +174,18 @@ LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool&
   std::uint64_t counts[8];
   for (std::uint64_t& c : counts) c = r.u(4);
   const auto [n_dy, n_2, n_slots, samples, n_jumps, axis, quantities, reserved] = counts;
-  if (n_dy < 2 || n_dy > kMaxAxis || n_2 < 1 || n_2 > kMaxAxis || n_dy * n_2 > kMaxAxis)
-    return fail(CTAB_ERR_AXES, "axis lengths out of range");
+  if (n_dy < 2 || n_dy > tables::kMaxAxisLength || n_2 < 1 || n_2 > tables::kMaxAxisLength)
+    return fail(CTAB_ERR_AXES, "axis lengths out of range (dy 2 to 2^20 values, second axis 1 to 2^20)");
   if (n_slots < 1 || n_slots > kMaxSlots || samples > kMaxStripSamples || quantities != kQuantities || reserved != 0 ||
       n_jumps > n_dy * n_2 * kWheels * n_slots)
     return fail(CTAB_ERR_SHAPE, "slots, strip samples, quantities or jumps out of range");
   if (axis > 2) return fail(CTAB_ERR_AXES, "unknown second-axis quantity");
+  const double bytes_in_memory = tables::table_bytes(static_cast<double>(n_dy), static_cast<double>(n_2),
+                                                     static_cast<double>(n_slots), static_cast<double>(samples));
+  if (bytes_in_memory > tables::kMaxTableBytes)
+    return fail(CTAB_ERR_SHAPE, "the table would take " + std::to_string(bytes_in_memory / (1u << 30)) +
+                                    " GiB in memory (limit " + std::to_string(tables::kMaxTableBytes / (1u << 30)) +
+                                    " GiB)");
   if (payload_bytes(n_dy, n_2, n_slots, samples, n_jumps, value_bytes) != payload_size)
     return fail(CTAB_ERR_SHAPE, "payload size does not match the counts");
 
@@ -194,6 +217,12 @@ LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool&
   }
   static_assert(std::numeric_limits<double>::is_iec559, "blobs store IEEE 754 values");
   return {};
+}
+
+}  // namespace
+
+LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool& single) {
+  return detail::guard_allocation([&] { return parse_blob(bytes, size, data, single); });
 }
 
 }  // namespace ctab::lookup

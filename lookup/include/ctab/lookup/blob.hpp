@@ -17,11 +17,17 @@ inline constexpr std::size_t kBlobHeaderBytes = 64;
 //! FNV-1a, 64 bit, of `size` bytes.
 [[nodiscard]] std::uint64_t fnv1a64(const void* data, std::size_t size) noexcept;
 
-//! Serialises `data` (valid per validate()); values stored as float when `single_precision`.
+//! Serialises `data` into `blob` after the checks of a load (validate(), and with `single_precision` every stored
+//! value within the float range): a blob this writes, its loader accepts. On failure `blob` is empty and the result
+//! names what is wrong.
+[[nodiscard]] LoadResult write_blob(const TableData& data, bool single_precision, std::vector<unsigned char>& blob);
+//! Serialises `data`, which the caller has checked (validate(), and check_float_range() with `single_precision`);
+//! values stored as float when `single_precision`.
 [[nodiscard]] std::vector<unsigned char> write_blob(const TableData& data, bool single_precision);
 
-//! Parses and checks a blob (magic, versions, sizes, checksum; contents are checked by the load). On success
-//! `single_precision` says whether the blob stores floats.
+//! Parses and checks a blob (magic, versions, reserved header bytes zero, sizes and the size limit before
+//! allocating, checksum; contents are checked by the load). On success `single_precision` says whether the blob
+//! stores floats. A failed allocation gives CTAB_ERR_OUT_OF_MEMORY.
 [[nodiscard]] LoadResult read_blob(const void* bytes, std::size_t size, TableData& data, bool& single_precision);
 
 //! True if the bytes start like an HDF5 file (signature at offset 0).
