@@ -183,6 +183,38 @@ TEST(LookupHostile, TablesBeyondTheSizeLimitAreRefusedBeforeAllocating) {
   EXPECT_NE(r.message.find("limit"), std::string::npos) << r.message;
 }
 
+// A blob file is read in chunks straight into the table's description: the same checks as in memory.
+TEST(LookupHostile, BlobFilesAreCheckedAsTheyAreReadInChunks) {
+  const std::vector<unsigned char> blob = write_blob(test::make_synthetic({.n_second = 3}), false);
+  const auto status_of = [](const std::vector<unsigned char>& bytes) {
+    const std::string path = ::testing::TempDir() + "lookup_hostile.blob";
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    EXPECT_NE(file, nullptr);
+    std::fwrite(bytes.data(), 1, bytes.size(), file);
+    std::fclose(file);
+    Table table;
+    const LoadResult r = open_blob_file(path, {}, table);
+    EXPECT_EQ(table.loaded(), r.ok()) << r.message;
+    return r.status;
+  };
+  EXPECT_EQ(status_of(blob), CTAB_OK);
+  std::vector<unsigned char> bad = blob;
+  bad[bad.size() - 9] ^= 1;
+  EXPECT_EQ(status_of(bad), CTAB_ERR_CHECKSUM);
+  bad = blob;
+  bad.resize(blob.size() - 8);
+  EXPECT_EQ(status_of(bad), CTAB_ERR_NOT_A_TABLE);
+  bad = blob;
+  bad[50] = 3;
+  EXPECT_EQ(status_of(bad), CTAB_ERR_NOT_A_TABLE) << "reserved header byte";
+  TableData data = test::make_synthetic();
+  data.jumps.push_back({0, 0xFFFFFFFFu, 0, 0, JumpKind::Appears});
+  EXPECT_EQ(status_of(write_blob(data, false)), CTAB_ERR_CONTENT);
+  Table table;
+  EXPECT_EQ(open_blob_file(::testing::TempDir() + "lookup_hostile_missing.blob", {}, table).status,
+            CTAB_ERR_CANNOT_OPEN);
+}
+
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define CTAB_NO_ADDRESS_SPACE_LIMIT 1  // the sanitizers reserve terabytes of address space
 #endif

@@ -48,13 +48,7 @@ LoadResult read_any(const std::string& path, TableData& data, bool& single_preci
     std::fclose(file);
   }
   if (looks_like_hdf5(signature, length)) return read_hdf5(path, data);
-  return detail::guard_allocation([&] {
-    std::string bytes, message;
-    if (!read_file(path, bytes, message)) return LoadResult{CTAB_ERR_CANNOT_OPEN, message};
-    LoadResult result = read_blob(bytes.data(), bytes.size(), data, single_precision);
-    if (!result.ok()) result.message = path + ": " + result.message;
-    return result;
-  });
+  return read_blob_file(path, data, single_precision);
 }
 
 LoadResult open_file(const std::string& path, const LoadOptions& options, Table& table) {
