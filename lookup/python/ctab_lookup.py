@@ -20,6 +20,7 @@ QUANTITIES = ("normal_force_N", "force_lateral_N", "force_vertical_N", "area_m2"
               "contact_angle_rad", "plane_angle_rad", "s_origin_y_rail_m", "s_origin_z_rail_m", "y_wheel_m",
               "y_rail_m", "y_cop_rail_m", "rolling_radius_m", "semi_axis_a_m", "semi_axis_b_m", "s_min_m", "s_max_m")
 STATUS = {0: "ok", 1: "clamped", -1: "invalid-input", -2: "not-loaded"}
+ERR_OUT_OF_MEMORY = -17  # CTAB_ERR_OUT_OF_MEMORY
 LINEAR, PCHIP = 0, 1
 
 
@@ -110,9 +111,10 @@ class Table:
             status = self._lib.ctab_table_open_memory(self._buffer, len(source), options, ctypes.byref(self._handle))
         else:
             status = self._lib.ctab_table_open(os.fsencode(source), options, ctypes.byref(self._handle))
-        if status != 0:
-            raise ValueError("%s: %s" % (source if not isinstance(source, (bytes, bytearray)) else "<bytes>",
-                                         self._lib.ctab_status_message(status).decode()))
+        if status != 0:  # out of memory (CTAB_ERR_OUT_OF_MEMORY) as Python's own MemoryError, the rest ValueError
+            error = MemoryError if status == ERR_OUT_OF_MEMORY else ValueError
+            raise error("%s: %s" % (source if not isinstance(source, (bytes, bytearray)) else "<bytes>",
+                                    self._lib.ctab_status_message(status).decode()))
         lib, h = self._lib, self._handle
         self.n_dy, self.n_second = lib.ctab_table_dy_count(h), lib.ctab_table_second_count(h)
         self.n_slots, self.strip_samples = lib.ctab_table_slot_count(h), lib.ctab_table_strip_samples(h)

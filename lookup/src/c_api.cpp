@@ -91,9 +91,12 @@ const char* ctab_status_message(int32_t status) {
     case CTAB_ERR_VERSION: return "unsupported blob format or table schema version";
     case CTAB_ERR_CHECKSUM: return "blob checksum mismatch (corrupted)";
     case CTAB_ERR_AXES:
-      return "bad axes (too short, not finite, not increasing, or dy refined below 1/64 of its mean step)";
-    case CTAB_ERR_SHAPE: return "array sizes do not match the axes, slots or strip samples";
-    case CTAB_ERR_CONTENT: return "bad content (non-finite value, unknown case status, presence not 0/1, bad jump)";
+      return "bad axes (fewer than 2 dy values, not finite, not increasing, a step too small to divide by, or dy "
+             "refined below 1/64 of its mean step)";
+    case CTAB_ERR_SHAPE: return "array sizes do not match the axes, slots or strip samples, or beyond the size limit";
+    case CTAB_ERR_CONTENT:
+      return "bad content (non-finite value or beyond 1e300, beyond the float range in single precision, PCHIP slopes "
+             "that overflow, unknown case status, presence not 0/1, bad jump)";
     case CTAB_ERR_OUT_OF_MEMORY: return "out of memory";
     case CTAB_ERR_HDF5_UNAVAILABLE: return "an HDF5 table, but this build loads blobs only (use ctab export)";
     default: return "unknown status";

@@ -4,6 +4,7 @@
 
 #include "ctab/lookup/ctab_lookup.h"
 #include "ctab/lookup/table.hpp"
+#include "load_guard.hpp"
 
 struct ctab_table {
   ctab::lookup::Table table;
@@ -27,7 +28,7 @@ ctab_status make_handle(ctab_table** out, Load&& load) noexcept {
   *out = nullptr;
   auto* handle = new (std::nothrow) ctab_table;
   if (handle == nullptr) return CTAB_ERR_OUT_OF_MEMORY;
-  const ctab_status status = load(handle->table).status;
+  const ctab_status status = guard_allocation([&] { return load(handle->table); }).status;
   if (status != CTAB_OK) {
     delete handle;
     return status;

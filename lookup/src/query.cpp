@@ -8,6 +8,7 @@
 
 #include "blend.hpp"
 #include "ctab/lookup/table.hpp"
+#include "ctab/tables/limits.hpp"
 
 // On x86-64 Linux with GCC the query is compiled twice, for baseline x86-64 and for x86-64-v3 (AVX2, FMA), and
 // the loader picks one once (ifunc); elsewhere it is compiled for the build's target only.
@@ -102,6 +103,14 @@ void Table::prelookup(double dy_m, double second, ctab_location& out) const noex
     out.i_dy = out.i_second = 0;
     out.f_dy = out.f_second = out.dy_m = out.second = 0.0;
   }
+}
+
+bool Table::valid_location(const ctab_location& where) const noexcept {
+  const std::size_t n_2 = second_.size();
+  const bool second_ok = n_2 == 1 ? where.i_second == 0 : tables::cell_in_range(where.i_second, n_2);
+  return (where.status == CTAB_OK || where.status == CTAB_CLAMPED) && where.reserved == 0 &&
+         tables::cell_in_range(where.i_dy, n_dy_) && second_ok && where.f_dy >= 0.0 && where.f_dy <= 1.0 &&
+         where.f_second >= 0.0 && where.f_second <= 1.0 && std::isfinite(where.dy_m) && std::isfinite(where.second);
 }
 
 template <typename T, bool kCubic>
@@ -204,10 +213,7 @@ CTAB_LOOKUP_CLONES void Table::query(const ctab_location& where, std::int32_t wh
     zero_result(out, 0, CTAB_NOT_LOADED);
     return;
   }
-  const bool valid = where.status >= 0 && (wheel == 0 || wheel == 1) && where.i_dy + 1 < n_dy_ &&
-                     where.i_second < second_.size() && (second_.size() == 1 || where.i_second + 1 < second_.size()) &&
-                     where.f_dy >= 0.0 && where.f_dy <= 1.0 && where.f_second >= 0.0 && where.f_second <= 1.0;
-  if (!valid) {
+  if (!valid_location(where) || (wheel != 0 && wheel != 1)) {
     zero_result(out, n_slots_, where.status == CTAB_NOT_LOADED ? CTAB_NOT_LOADED : CTAB_INVALID_INPUT);
     return;
   }

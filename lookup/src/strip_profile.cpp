@@ -14,10 +14,8 @@ ctab_status Table::strip_profile(const ctab_location& where, std::int32_t wheel,
   if (count) *count = 0;
   if (!loaded()) return CTAB_NOT_LOADED;
   const std::size_t n_2 = second_.size();
-  if (count == nullptr || where.status < 0 || wheel < 0 || wheel > 1 || slot < 0 ||
-      static_cast<std::uint32_t>(slot) >= n_slots_ || capacity < strip_samples_ || where.i_dy + 1 >= n_dy_ ||
-      where.i_second >= n_2 || (n_2 > 1 && where.i_second + 1 >= n_2) || !(where.f_dy >= 0.0 && where.f_dy <= 1.0) ||
-      !(where.f_second >= 0.0 && where.f_second <= 1.0))
+  if (count == nullptr || !valid_location(where) || wheel < 0 || wheel > 1 || slot < 0 ||
+      static_cast<std::uint32_t>(slot) >= n_slots_ || capacity < strip_samples_)
     return CTAB_INVALID_INPUT;
   const auto w = static_cast<std::uint32_t>(wheel), s = static_cast<std::uint32_t>(slot);
   // Weights of the four neighbouring cases: dy rule per row, then the row rule.

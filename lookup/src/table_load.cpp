@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "ctab/lookup/table.hpp"
+#include "load_guard.hpp"
 
 namespace ctab::lookup {
 
@@ -13,6 +15,8 @@ namespace {
 
 constexpr std::size_t kAlignBytes = 64;     // a cache line
 constexpr double kUniformTolerance = 1e-9;  // relative to the dy span
+// Largest PCHIP slope times a cell's width: with values within kMaxTableValue, a cubic's four terms stay finite.
+constexpr double kMaxSlopeTerm = 1e306;
 
 bool succeeded(std::int8_t case_status) noexcept { return case_status >= 0; }  // converged, no contact, under-resolved
 
@@ -38,16 +42,15 @@ CellRule cell_rule(std::int8_t status_lo, std::int8_t status_hi, bool present_lo
   return CellRule::Nearest;
 }
 
-//! Copies `from` into `to` converted to T, starting at a 64-byte boundary.
-template <typename T, typename Aligned>
-void store_aligned(const std::vector<double>& from, Aligned& to) {
-  if (from.empty()) return;
+//! Sizes `to` for `count` values of T starting at a 64-byte boundary (zeros) and returns that start.
+template <typename T, typename Storage>
+T* allocate_aligned(Storage& to, std::size_t count) {
+  if (count == 0) return nullptr;
   constexpr std::size_t pad = kAlignBytes / sizeof(T);
-  to.storage.assign(from.size() + pad, T{});
+  to.storage.assign(count + pad, T{});
   const auto address = reinterpret_cast<std::uintptr_t>(to.storage.data());
   to.skip = (kAlignBytes - address % kAlignBytes) % kAlignBytes / sizeof(T);
-  std::transform(from.begin(), from.end(), to.storage.begin() + static_cast<std::ptrdiff_t>(to.skip),
-                 [](double v) { return static_cast<T>(v); });
+  return to.storage.data() + to.skip;
 }
 
 template <typename T>
@@ -89,108 +92,143 @@ std::vector<double> cell_widths(const std::vector<double>& dy_m, bool& uniform) 
   return width;
 }
 
-// One record per case in double precision: quantities (zero for absent patches), presence, the rule of the cell
-// that starts at the case, status, roll and delta r.
-std::vector<double> case_records(const TableData& data, const RecordLayout& layout) {
+// The value at offset k of case c's record, in double, from the description: a slot's quantity (zero where the
+// patch is absent), the roll or delta r.
+double record_value(const TableData& data, const RecordLayout& layout, std::size_t c, std::size_t k) noexcept {
+  if (k == layout.roll) return data.roll_rad[c / kWheels];
+  if (k == layout.roll + 1) return data.rolling_radius_difference_m[c / kWheels];
+  const std::size_t p = c * data.n_slots + k / kQuantities;
+  return data.present[p] ? data.quantities[p * kQuantities + k % kQuantities] : 0.0;
+}
+
+// One record per case, in T, into `records` (zeroed): quantities (zero for absent patches), presence, the rule of the
+// cell that starts at the case, status, roll and delta r.
+template <typename T>
+void case_records(const TableData& data, const RecordLayout& layout, T* records) {
   const std::size_t n_dy = data.n_dy(), n_2 = data.n_second(), n_slots = data.n_slots;
   std::vector<std::uint8_t> jump(data.present.size(), 0);  // by the patch index of the cell's lower end
   for (const Jump& j : data.jumps) jump[data.patch_index(j.i_dy, j.i_second, j.wheel, j.slot)] = 1;
-  std::vector<double> records(n_dy * n_2 * kWheels * layout.stride, 0.0);
   for (std::size_t i = 0; i < n_dy; ++i)
     for (std::size_t i2 = 0; i2 < n_2; ++i2)
       for (std::size_t w = 0; w < kWheels; ++w) {
         const std::size_t c = data.case_index(i, i2, w);
-        double* record = records.data() + c * layout.stride;
+        T* record = records + c * layout.stride;
         for (std::size_t s = 0; s < n_slots; ++s) {
           const std::size_t p = data.patch_index(i, i2, w, s);
-          if (data.present[p])  // absent patches stay zero
-            std::copy_n(data.quantities.begin() + static_cast<std::ptrdiff_t>(p * kQuantities), kQuantities,
-                        record + s * kQuantities);
-          record[layout.present + s] = data.present[p] ? 1.0 : 0.0;
+          for (std::size_t q = 0; q < kQuantities; ++q)
+            record[s * kQuantities + q] = static_cast<T>(record_value(data, layout, c, s * kQuantities + q));
+          record[layout.present + s] = data.present[p] ? T{1} : T{0};
           CellRule rule = CellRule::Nearest;  // the last dy value starts no cell
           if (i + 1 < n_dy)
             rule = cell_rule(data.case_status[c], data.case_status[data.case_index(i + 1, i2, w)], data.present[p] != 0,
                              data.present[data.patch_index(i + 1, i2, w, s)] != 0, jump[p] != 0);
-          record[layout.rule + s] = static_cast<double>(rule);
+          record[layout.rule + s] = static_cast<T>(rule);
         }
-        record[layout.status] = data.case_status[c];
-        record[layout.roll] = data.roll_rad[i * n_2 + i2];
-        record[layout.roll + 1] = data.rolling_radius_difference_m[i * n_2 + i2];
+        record[layout.status] = static_cast<T>(data.case_status[c]);
+        record[layout.roll] = static_cast<T>(record_value(data, layout, c, layout.roll));
+        record[layout.roll + 1] = static_cast<T>(record_value(data, layout, c, layout.roll + 1));
       }
-  return records;
 }
 
-// The PCHIP dy-slopes of every record value that is interpolated (node_slope), laid out as the records: a slot's
-// quantities where the neighbouring cells interpolate it, the roll and delta r always.
-std::vector<double> pchip_slopes(const std::vector<double>& records, const RecordLayout& layout,
-                                 const std::vector<double>& width, std::size_t n_dy, std::size_t n_slots) {
-  const std::size_t stride = layout.stride;
-  const std::size_t row = records.size() / stride / n_dy;  // cases per dy value
-  std::vector<double> slopes(records.size(), 0.0);
+// The PCHIP dy-slopes of every record value that is interpolated (node_slope, from the description's double
+// values), into `slopes` laid out as the records: a slot's quantities where the neighbouring cells interpolate it,
+// the roll and delta r always. False when a slope times the widest cell exceeds kMaxSlopeTerm (or, in single
+// precision, the float range): the table's values change too fast for the cubic to stay finite.
+template <typename T>
+bool pchip_slopes(const TableData& data, const T* records, const RecordLayout& layout,
+                  const std::vector<double>& width, T* slopes) {
+  const std::size_t stride = layout.stride, n_dy = data.n_dy(), n_slots = data.n_slots;
+  const std::size_t row = data.n_second() * kWheels;  // cases per dy value
+  const double widest = *std::max_element(width.begin(), width.end());
+  const double largest = std::min(kMaxSlopeTerm / widest, static_cast<double>(std::numeric_limits<T>::max()));
+  bool finite = true;
   const auto interpolable = [&](std::size_t c, std::size_t s) {
-    return records[c * stride + layout.rule + s] == static_cast<double>(CellRule::Interpolate);
+    return records[c * stride + layout.rule + s] == static_cast<T>(CellRule::Interpolate);
   };
-  const auto slope = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
-    const double v = records[c * stride + k];
+  const auto put = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
+    const double v = record_value(data, layout, c, k);
     const std::size_t i = c / row;
     const double h_left = has_left ? width[i - 1] : 0.0, h_right = has_right ? width[i] : 0.0;
-    const double left = has_left ? (v - records[(c - row) * stride + k]) / h_left : 0.0;
-    const double right = has_right ? (records[(c + row) * stride + k] - v) / h_right : 0.0;
-    return node_slope(has_left, left, h_left, has_right, right, h_right);
+    const double left = has_left ? (v - record_value(data, layout, c - row, k)) / h_left : 0.0;
+    const double right = has_right ? (record_value(data, layout, c + row, k) - v) / h_right : 0.0;
+    const double slope = node_slope(has_left, left, h_left, has_right, right, h_right);
+    finite = finite && std::fabs(slope) <= largest;
+    slopes[c * stride + k] = finite ? static_cast<T>(slope) : T{0};
   };
   for (std::size_t i = 0; i < n_dy; ++i)
     for (std::size_t k = 0; k < row; ++k) {
       const std::size_t c = i * row + k;
       for (std::size_t s = 0; s < n_slots; ++s) {
         const bool has_left = i >= 1 && interpolable(c - row, s), has_right = i + 1 < n_dy && interpolable(c, s);
-        for (std::size_t q = 0; q < kQuantities; ++q)
-          slopes[c * stride + s * kQuantities + q] = slope(c, s * kQuantities + q, has_left, has_right);
+        for (std::size_t q = 0; q < kQuantities; ++q) put(c, s * kQuantities + q, has_left, has_right);
       }
       for (std::size_t k2 = layout.roll; k2 < layout.roll + 2; ++k2)  // roll and delta r: always interpolable
-        slopes[c * stride + k2] = slope(c, k2, i >= 1, i + 1 < n_dy);
+        put(c, k2, i >= 1, i + 1 < n_dy);
     }
-  return slopes;
+  return finite;
 }
 
 }  // namespace
 
 LoadResult Table::load(const TableData& data, const LoadOptions& options) {
+  return detail::guard_allocation([&] { return build(data, nullptr, options); });
+}
+
+LoadResult Table::load(TableData&& data, const LoadOptions& options) {
+  return detail::guard_allocation([&] { return build(data, &data, options); });
+}
+
+LoadResult Table::build(const TableData& data, TableData* consumed, const LoadOptions& options) {
   *this = Table{};
   LoadResult result = validate(data);
+  if (result.ok() && options.single_precision) result = check_float_range(data);
   if (!result.ok()) return result;
 
-  const std::size_t n_dy = data.n_dy(), n_slots = data.n_slots;
   bool uniform = true;
   const std::vector<double> width = cell_widths(data.dy_m, uniform);
-  const RecordLayout layout = record_layout(n_slots, options.single_precision);
+  const RecordLayout layout = record_layout(data.n_slots, options.single_precision);
   off_present_ = layout.present;
   off_rule_ = layout.rule;
   off_status_ = layout.status;
   off_roll_ = layout.roll;
   stride_ = layout.stride;
-  const std::vector<double> records = case_records(data, layout);
-  const std::vector<double> slopes =
-      options.interpolation == CTAB_PCHIP ? pchip_slopes(records, layout, width, n_dy, n_slots) : std::vector<double>{};
-
+  const bool slopes_ok =
+      options.single_precision ? build_records<float>(data, width, options, records_f_, slopes_f_)
+                               : build_records<double>(data, width, options, records_d_, slopes_d_);
+  if (!slopes_ok) {
+    *this = Table{};
+    return {CTAB_ERR_CONTENT, "a value changes too fast between neighbouring dy rows for PCHIP slopes to stay finite"};
+  }
+  if (consumed != nullptr) consumed->quantities = std::vector<double>{};  // in the records now: its memory back
   if (options.single_precision) {
-    store_aligned<float>(records, records_f_);
-    store_aligned<float>(slopes, slopes_f_);
     store(data.strip_half_length_m, strip_a_f_);
     store(data.strip_peak_pressure_Pa, strip_p0_f_);
+  } else if (consumed != nullptr) {
+    strip_a_d_ = std::move(consumed->strip_half_length_m);
+    strip_p0_d_ = std::move(consumed->strip_peak_pressure_Pa);
   } else {
-    store_aligned<double>(records, records_d_);
-    store_aligned<double>(slopes, slopes_d_);
     strip_a_d_ = data.strip_half_length_m;
     strip_p0_d_ = data.strip_peak_pressure_Pa;
   }
   second_ = data.second;
   second_kind_ = data.second_axis;
   interpolation_ = options.interpolation;
-  n_slots_ = static_cast<std::uint32_t>(n_slots);
+  n_slots_ = static_cast<std::uint32_t>(data.n_slots);
   strip_samples_ = static_cast<std::uint32_t>(data.strip_samples);
   build_dy_index(data.dy_m, width, uniform);
-  n_dy_ = static_cast<std::uint32_t>(n_dy);
+  n_dy_ = static_cast<std::uint32_t>(data.n_dy());
   return result;
+}
+
+template <typename T, typename Storage>
+bool Table::build_records(const TableData& data, const std::vector<double>& width, const LoadOptions& options,
+                          Storage& records, Storage& slopes) {
+  const std::size_t count = data.n_dy() * data.n_second() * kWheels * stride_;
+  T* at = allocate_aligned<T>(records, count);
+  case_records<T>(data, RecordLayout{off_present_, off_rule_, off_status_, off_roll_, stride_}, at);
+  if (options.interpolation != CTAB_PCHIP) return true;
+  return pchip_slopes<T>(data, at, RecordLayout{off_present_, off_rule_, off_status_, off_roll_, stride_}, width,
+                         allocate_aligned<T>(slopes, count));
 }
 
 template <>

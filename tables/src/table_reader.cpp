@@ -2,6 +2,7 @@
 // arrays are read and their contents validated (table_validation.cpp).
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <set>
 
 #include "ctab/tables/table.hpp"
@@ -15,8 +16,6 @@ namespace {
 
 using detail::Handle;
 
-constexpr hsize_t kMaxAxisLength = hsize_t{1} << 20;         // values per axis
-constexpr double kMaxTableBytes = 2.0 * 1024 * 1024 * 1024;  // memory of all arrays together [bytes]
 
 struct RootAttributes {
   std::map<std::string, std::string> text;
@@ -144,13 +143,18 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
   for (int i = 0; i < 2; ++i) {
     std::vector<hsize_t> dims;
     if (TableResult r = dataset_dims(file, path, axes[i], dims); !r.ok()) return r;
-    if (dims.size() != 1 || dims[0] == 0 || dims[0] > kMaxAxisLength)
+    if (dims.size() != 1 || dims[0] == 0 || dims[0] > static_cast<hsize_t>(kMaxAxisLength))
       return fail(TableStatus::WrongShape, path + ": " + axes[i] + " has shape " + shape_text(dims) +
                                                ": it must be 1-D with 1 to " + std::to_string(kMaxAxisLength) +
                                                " values");
     lengths[i] = dims[0];
   }
-  double bytes = 0.0;
+  const double bytes = table_bytes(static_cast<double>(lengths[0]), static_cast<double>(lengths[1]),
+                                   static_cast<double>(table.n_slots), static_cast<double>(table.strip_samples));
+  if (bytes > kMaxTableBytes)
+    return fail(TableStatus::InvalidContent, path + ": the table would take " + std::to_string(bytes / (1u << 30)) +
+                                                 " GiB in memory (limit " + std::to_string(kMaxTableBytes / (1u << 30)) +
+                                                 " GiB, tables/README.md \"Limits\")");
   const Handle status_type(detail::make_case_status_type(), H5Tclose);
   for (const detail::Field& f : detail::schema_fields(table)) {
     if (f.optional && H5Lexists(file, f.path, H5P_DEFAULT) <= 0) continue;  // an older table: filled on read
@@ -161,9 +165,6 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
     if (dims != want)
       return fail(TableStatus::WrongShape,
                   path + ": dataset " + f.path + " has shape " + shape_text(dims) + ", expected " + shape_text(want));
-    double count = 1.0;
-    for (const hsize_t d : dims) count *= static_cast<double>(d);
-    bytes += count * (f.element == detail::Element::Float64 ? 8.0 : 1.0);
     const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
     const Handle type(H5Dget_type(dataset.get()), H5Tclose);
     const bool type_ok = f.element == detail::Element::Float64 ? H5Tget_class(type.get()) == H5T_FLOAT
@@ -176,9 +177,6 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
                       (f.element == detail::Element::Status ? "expected the CaseStatus enum" : "see tables/README.md") +
                       ")");
   }
-  if (bytes > kMaxTableBytes)
-    return fail(TableStatus::InvalidContent, path + ": the arrays would take " + std::to_string(bytes / 1e9) +
-                                                 " GB (limit " + std::to_string(kMaxTableBytes / 1e9) + " GB)");
   table.lateral_displacement_m.assign(lengths[0], 0.0);
   table.second_axis.assign(lengths[1], 0.0);
   return {};
@@ -235,7 +233,7 @@ TableResult read_jumps(hid_t file, const std::string& path, Table& table) {
   table.jumps.clear();
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const detail::JumpRecord& r = rows[i];
-    if (r.i_dy + 1 >= table.n_dy() || r.dy_low_m != table.lateral_displacement_m[r.i_dy] ||
+    if (!cell_in_range(r.i_dy, table.n_dy()) || r.dy_low_m != table.lateral_displacement_m[r.i_dy] ||
         r.dy_high_m != table.lateral_displacement_m[r.i_dy + 1])
       return fail(TableStatus::InvalidContent,
                   path + ": /jumps[" + std::to_string(i) + "]: i_dy or dy_low_m/dy_high_m do not match the dy axis");
@@ -267,7 +265,12 @@ TableResult read_table(const std::string& path, Table& table) {
     return fail(TableStatus::NotATable, path + ": not an HDF5 contact table (or truncated)");
   const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) return fail(TableStatus::NotATable, path + ": cannot be opened as HDF5 (truncated or damaged)");
-  TableResult result = read_file(file.get(), path, table);
+  TableResult result;
+  try {
+    result = read_file(file.get(), path, table);
+  } catch (const std::exception&) {  // a failed allocation (bad_alloc, length_error): the table fits, memory not
+    result = fail(TableStatus::OutOfMemory, path + ": out of memory while reading the table");
+  }
   if (!result.ok()) table = Table{};
   return result;
 }

@@ -100,7 +100,8 @@ TableResult check_jumps(const Table& t, const std::string& path) {
   for (std::size_t i = 0; i < t.jumps.size(); ++i) {
     const Jump& j = t.jumps[i];
     const int kind = static_cast<int>(j.kind);
-    if (j.i_second >= t.n_second() || j.wheel >= kWheels || j.slot >= t.n_slots || j.i_dy + 1 >= t.n_dy() ||
+    if (!index_in_range(j.i_second, t.n_second()) || !index_in_range(j.wheel, kWheels) ||
+        !index_in_range(j.slot, t.n_slots) || !cell_in_range(j.i_dy, t.n_dy()) ||
         kind < static_cast<int>(JumpKind::Appears) || kind > static_cast<int>(JumpKind::Moves))
       return {TableStatus::InvalidContent, path + ": /jumps[" + std::to_string(i) + "]: index or kind out of range"};
   }

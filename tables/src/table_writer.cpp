@@ -277,6 +277,11 @@ std::string temporary_path(const std::string& path) { return path + ".tmp-" + st
 
 TableResult write_table(const Table& table, const std::string& path, const ParallelFor& parallel_for) {
   detail::silence_hdf5_errors();
+  const double bytes = table_bytes(static_cast<double>(table.n_dy()), static_cast<double>(table.n_second()),
+                                   static_cast<double>(table.n_slots), static_cast<double>(table.strip_samples));
+  if (bytes > kMaxTableBytes)  // a table no reader would accept
+    return fail(path + ": the table takes " + std::to_string(bytes / (1u << 30)) + " GiB in memory (limit " +
+                std::to_string(kMaxTableBytes / (1u << 30)) + " GiB, tables/README.md \"Limits\")");
   const std::string temporary = temporary_path(path);
   const TableResult result = write_file(table, temporary, parallel_for);
   if (!result.ok()) {

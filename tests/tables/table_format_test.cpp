@@ -425,3 +425,55 @@ TEST(TableFormat, WriteIsAtomic) {
   EXPECT_FALSE(std::filesystem::exists(path));
   EXPECT_FALSE(std::filesystem::exists(temporary_path(path)));
 }
+
+// A jump whose i_dy is 0xFFFFFFFF: i_dy + 1 wraps to 0 in 32 bits, so a check written as i_dy + 1 < n_dy would let
+// it index the dy axis far out of range.
+TEST(TableFormat, JumpCellIndexThatWrapsIn32BitsIsRefused) {
+  const std::uint32_t wrapping = 0xFFFFFFFFu;
+  expect_failure(read_edited("jump_wraps.h5",
+                             [&](hid_t f) {
+                               const hid_t d = H5Dopen2(f, "/jumps", H5P_DEFAULT);
+                               const hid_t memory = H5Tcreate(H5T_COMPOUND, sizeof wrapping);
+                               H5Tinsert(memory, "i_dy", 0, H5T_NATIVE_UINT32);
+                               const hid_t space = H5Dget_space(d);
+                               const hsize_t start = 0, count = 1;
+                               H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
+                               const hid_t memory_space = H5Screate_simple(1, &count, nullptr);
+                               EXPECT_GE(H5Dwrite(d, memory, memory_space, space, H5P_DEFAULT, &wrapping), 0);
+                               H5Sclose(memory_space);
+                               H5Sclose(space);
+                               H5Tclose(memory);
+                               H5Dclose(d);
+                             }),
+                 TableStatus::InvalidContent, {"/jumps[0]", "i_dy"});
+  EXPECT_FALSE(cell_in_range(0xFFFFFFFFu, 6));
+  EXPECT_TRUE(cell_in_range(4, 6));
+  EXPECT_FALSE(cell_in_range(5, 6));
+  EXPECT_FALSE(cell_in_range(0, 1));
+}
+
+// The one size limit (kMaxTableBytes), from the axis lengths and attributes, before anything is allocated; the
+// writer refuses what no reader would read.
+TEST(TableFormat, TablesBeyondTheSizeLimitAreRefused) {
+  const std::int64_t samples = 4096;
+  expect_failure(read_edited("huge.h5",
+                             [&](hid_t f) {
+                               replace_attribute(f, "strip_samples", H5T_STD_I64LE, H5T_NATIVE_INT64, &samples);
+                               H5Ldelete(f, "/axes/lateral_displacement_m", H5P_DEFAULT);
+                               const hsize_t n = hsize_t{1} << 20;
+                               const hid_t space = H5Screate_simple(1, &n, nullptr);
+                               H5Dclose(H5Dcreate2(f, "/axes/lateral_displacement_m", H5T_IEEE_F64LE, space,
+                                                   H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+                               H5Sclose(space);
+                             }),
+                 TableStatus::InvalidContent, {"GiB in memory", "limit 2.0"});
+  EXPECT_GT(table_bytes(1 << 20, 1, 3, 4096), kMaxTableBytes);
+  Table big;
+  big.lateral_displacement_m.assign(40000, 0.0);
+  big.second_axis.assign(1, 1.0);
+  big.n_slots = 16;
+  big.strip_samples = 4096;  // 40000 x 2 x 16 x 8212 x 8 bytes: 84 GB declared, nothing allocated
+  const TableResult written = write_table(big, temp_path("too_big.h5"));
+  expect_failure(written, TableStatus::WriteFailed, {"GiB in memory", "limit"});
+  EXPECT_FALSE(std::filesystem::exists(temp_path("too_big.h5")));
+}

@@ -63,10 +63,6 @@ namespace {
 
 using detail::line_of;
 
-//! Per-patch quantities of the table (tables/README.md): 20 scalars per slot, besides the two strip profiles.
-constexpr double kTableScalarsPerSlot = 20.0;
-constexpr double kTableWheels = 2.0;  // both wheels are stored, mirrored or not
-
 class Reader {
  public:
   Reader(const toml::table& root, std::string source) : root_(root), source_(std::move(source)) {}
@@ -409,9 +405,9 @@ std::size_t TableConfig::key_line(const std::string& key) const {
 }
 
 double table_memory_bytes(const TableConfig& c) noexcept {
-  const double cases = static_cast<double>(c.lateral_displacement_m.size()) * static_cast<double>(c.load_values.size());
-  const double per_slot = kTableScalarsPerSlot + 2.0 * static_cast<double>(c.strip_samples);
-  return cases * kTableWheels * static_cast<double>(c.patch_slots) * per_slot * sizeof(double);
+  return tables::table_bytes(static_cast<double>(c.lateral_displacement_m.size()),
+                             static_cast<double>(c.load_values.size()), static_cast<double>(c.patch_slots),
+                             static_cast<double>(c.strip_samples));
 }
 
 const char* load_axis_name(LoadKind kind) noexcept {

@@ -1,4 +1,6 @@
 // Loading HDF5 tables or blobs by the file's first bytes; the C loader ctab_table_open_hdf5.
+#include <cstdio>
+
 #include "c_handle.hpp"
 #include "ctab/lookup/blob.hpp"
 #include "ctab/lookup/ctab_lookup_hdf5.h"
@@ -19,6 +21,7 @@ ctab_status to_status(tables::TableStatus status) noexcept {
     case tables::TableStatus::WrongShape: return CTAB_ERR_SHAPE;
     case tables::TableStatus::InvalidContent:
     case tables::TableStatus::WriteFailed: return CTAB_ERR_CONTENT;
+    case tables::TableStatus::OutOfMemory: return CTAB_ERR_OUT_OF_MEMORY;
   }
   return CTAB_ERR_CONTENT;
 }
@@ -26,34 +29,40 @@ ctab_status to_status(tables::TableStatus status) noexcept {
 }  // namespace
 
 LoadResult read_hdf5(const std::string& path, TableData& data) {
-  tables::Table table;
-  const tables::TableResult read = tables::read_table(path, table);
-  if (!read.ok()) return {to_status(read.status), read.message};
-  LoadResult result = from_tables(table, data);
-  if (!result.ok()) result.message = path + ": " + result.message;
-  return result;
+  return detail::guard_allocation([&] {
+    tables::Table table;
+    const tables::TableResult read = tables::read_table(path, table);
+    if (!read.ok()) return LoadResult{to_status(read.status), read.message};
+    LoadResult result = from_tables(std::move(table), data);
+    if (!result.ok()) result.message = path + ": " + result.message;
+    return result;
+  });
 }
 
 LoadResult read_any(const std::string& path, TableData& data, bool& single_precision) {
-  std::string bytes, message;
   single_precision = false;
-  if (!read_file(path, bytes, message)) return {CTAB_ERR_CANNOT_OPEN, message};
-  if (looks_like_hdf5(bytes.data(), bytes.size())) return read_hdf5(path, data);
-  LoadResult result = read_blob(bytes.data(), bytes.size(), data, single_precision);
-  if (!result.ok()) result.message = path + ": " + result.message;
-  return result;
+  unsigned char signature[8] = {};
+  std::size_t length = 0;
+  if (std::FILE* file = std::fopen(path.c_str(), "rb")) {  // the first bytes say which reader
+    length = std::fread(signature, 1, sizeof signature, file);
+    std::fclose(file);
+  }
+  if (looks_like_hdf5(signature, length)) return read_hdf5(path, data);
+  return read_blob_file(path, data, single_precision);
 }
 
 LoadResult open_file(const std::string& path, const LoadOptions& options, Table& table) {
-  TableData data;
-  bool single = false;
-  LoadResult result = read_any(path, data, single);
-  if (!result.ok()) return result;
-  LoadOptions effective = options;
-  effective.single_precision = options.single_precision || single;
-  result = table.load(data, effective);
-  if (!result.ok()) result.message = path + ": " + result.message;
-  return result;
+  return detail::guard_allocation([&] {
+    TableData data;
+    bool single = false;
+    LoadResult result = read_any(path, data, single);
+    if (!result.ok()) return result;
+    LoadOptions effective = options;
+    effective.single_precision = options.single_precision || single;
+    result = table.load(std::move(data), effective);
+    if (!result.ok()) result.message = path + ": " + result.message;
+    return result;
+  });
 }
 
 }  // namespace ctab::lookup

@@ -34,10 +34,12 @@ typedef enum ctab_status {
   CTAB_ERR_NOT_A_TABLE = -11, /* neither a ctab blob nor (with ctab_lookup_hdf5) an HDF5 table; truncated */
   CTAB_ERR_VERSION = -12,     /* blob format or table schema version not supported */
   CTAB_ERR_CHECKSUM = -13,    /* blob payload does not match its checksum */
-  CTAB_ERR_AXES = -14,    /* axes too short, not finite, not increasing, or dy refined below 1/64 of its mean step */
-  CTAB_ERR_SHAPE = -15,   /* array sizes do not match the axes, slots or strip samples */
-  CTAB_ERR_CONTENT = -16, /* non-finite value, unknown case status, presence not 0/1, bad jump */
-  CTAB_ERR_OUT_OF_MEMORY = -17,
+  CTAB_ERR_AXES = -14,  /* fewer than 2 dy values, not finite, not increasing, a step without a finite inverse, or
+                           dy refined below 1/64 of its mean step */
+  CTAB_ERR_SHAPE = -15, /* array sizes do not match the axes, slots or strip samples; above the size limit */
+  CTAB_ERR_CONTENT = -16, /* non-finite value or beyond 1e300, beyond the float range in single precision, PCHIP
+                             slopes that overflow, unknown case status, presence not 0/1, bad jump */
+  CTAB_ERR_OUT_OF_MEMORY = -17, /* an allocation failed while loading */
   CTAB_ERR_HDF5_UNAVAILABLE = -18 /* an HDF5 file given to a build without ctab_lookup_hdf5: export a blob */
 } ctab_status;
 

@@ -13,7 +13,5 @@ namespace ctab::lookup {
 [[nodiscard]] LoadResult open_memory(const void* bytes, std::size_t size, const LoadOptions& options, Table& table);
 //! Reads a blob file and loads it; an HDF5 file gives CTAB_ERR_HDF5_UNAVAILABLE.
 [[nodiscard]] LoadResult open_blob_file(const std::string& path, const LoadOptions& options, Table& table);
-//! Reads a whole file; false (and a message) if it cannot be opened or read.
-[[nodiscard]] bool read_file(const std::string& path, std::string& bytes, std::string& message);
 
 }  // namespace ctab::lookup

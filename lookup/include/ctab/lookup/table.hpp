@@ -33,8 +33,12 @@ class Table {
   Table& operator=(Table&&) = default;
   Table(const Table&) = delete;
   Table& operator=(const Table&) = delete;
-  //! Validates `data` and builds the table; on failure the table stays empty (loaded() false).
+  //! Validates `data` and builds the table; on failure the table stays empty (loaded() false). A failed allocation
+  //! gives CTAB_ERR_OUT_OF_MEMORY (no exception leaves a load).
   [[nodiscard]] LoadResult load(const TableData& data, const LoadOptions& options);
+  //! The same, taking `data`'s arrays as they are used (the strip profiles are moved, the quantities released once
+  //! in the records), so that a load holds little more than the table itself at its peak. `data` is left unspecified.
+  [[nodiscard]] LoadResult load(TableData&& data, const LoadOptions& options);
   [[nodiscard]] bool loaded() const noexcept { return n_dy_ >= 2; }
 
   [[nodiscard]] std::uint32_t n_dy() const noexcept { return n_dy_; }
@@ -66,6 +70,11 @@ class Table {
                             std::uint32_t* count) const noexcept;
 
  private:
+  LoadResult build(const TableData& data, TableData* consumed, const LoadOptions& options);
+  //! The records (and with PCHIP the slopes) in T; false when a slope would overflow.
+  template <typename T, typename Storage>
+  bool build_records(const TableData& data, const std::vector<double>& width, const LoadOptions& options,
+                     Storage& records, Storage& slopes);
   //! Fraction in the dy cell, the nearest-neighbour step and the Hermite basis (slope terms times the cell's width).
   struct DyBasis {
     double f, step, h00, h01, h10, h11;
@@ -78,6 +87,9 @@ class Table {
                  double* v) const noexcept;
   template <typename T, bool kCubic>
   void wheelset(const ctab_location& where, std::uint32_t wheel, const DyBasis& basis, ctab_result& out) const noexcept;
+  //! True when every field of a caller's location is one this table's prelookup can give (status ok or clamped,
+  //! cells on the axes, fractions in [0, 1], finite point, reserved 0).
+  [[nodiscard]] bool valid_location(const ctab_location& where) const noexcept;
   //! Index of case (i_dy, i_second, wheel).
   [[nodiscard]] std::size_t case_(std::size_t i_dy, std::size_t i_second, std::size_t wheel) const noexcept {
     return (i_dy * second_.size() + i_second) * kWheels + wheel;

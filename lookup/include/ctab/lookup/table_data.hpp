@@ -21,6 +21,10 @@ inline constexpr int kSchemaVersion = 2;  //!< the table schema this core unders
 //! kMaxDyRefinement entries per node. The same bound as tables::kMaxDyRefinement.
 inline constexpr double kMaxDyRefinement = 64.0;
 
+//! Largest magnitude of a tabulated value: any blend of a few such values (linear, PCHIP, second axis) stays finite.
+//! Physical tables hold nothing near it (pressures about 1e9 Pa).
+inline constexpr double kMaxTableValue = 1e300;
+
 //! Quantity kinds of the second axis, stored as numbers in blobs.
 enum class SecondAxis : std::uint32_t { VerticalLoad = 0, NormalLoad = 1, Approach = 2 };
 [[nodiscard]] const char* second_axis_name(SecondAxis axis) noexcept;
@@ -74,7 +78,10 @@ struct LoadResult {
   [[nodiscard]] bool ok() const noexcept { return status == CTAB_OK; }
 };
 
-//! Checks a description: axes, sizes, finite values, status values, presence, jumps. Allocates nothing.
+//! Checks a description: axes (steps with a finite inverse), sizes, finite values within +-kMaxTableValue, status
+//! values, presence, jumps.
 [[nodiscard]] LoadResult validate(const TableData& data);
+//! CTAB_ERR_CONTENT, naming the array, when a value that single precision stores lies beyond the float range.
+[[nodiscard]] LoadResult check_float_range(const TableData& data);
 
 }  // namespace ctab::lookup

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "ctab/tables/limits.hpp"
+
 #include "ctab/tables/case_status.hpp"
 
 namespace ctab::tables {
@@ -132,6 +134,7 @@ enum class TableStatus : std::int8_t {
   WrongShape = -5,
   InvalidContent = -6,  //!< non-finite or out-of-range values, bad axes, unknown status, bad attributes
   WriteFailed = -7,
+  OutOfMemory = -8,  //!< an allocation failed while reading (the table fits the size limit, this process's memory not)
 };
 
 struct TableResult {
@@ -165,8 +168,9 @@ using ParallelFor = std::function<void(std::size_t count, const std::function<vo
 void start_hdf5() noexcept;
 //! The temporary file write_table uses for `path` in this process: `path + ".tmp-<pid>"`.
 [[nodiscard]] std::string temporary_path(const std::string& path);
-//! Reads and validates a table: schema version, every dataset present with the right shape, axes, attributes
-//! (checked before anything is allocated from them), and contents (finite values, status values, presence 0/1).
+//! Reads and validates a table: schema version, every dataset present with the right shape, axes, attributes and
+//! the size limit (kMaxTableBytes, checked before anything is allocated from them), and contents (finite values,
+//! status values, presence 0/1). A failed allocation gives OutOfMemory; nothing is thrown.
 [[nodiscard]] TableResult read_table(const std::string& path, Table& table);
 
 }  // namespace ctab::tables

@@ -31,9 +31,8 @@ inline constexpr double kMaxSmoothingLength_m = 0.1;
 inline constexpr std::size_t kMaxPatchSlots = 16;
 //! Most cases (lateral shifts x loads) per table. Chosen: at about 1 ms per wheel solve this is an hour on 1 core.
 inline constexpr std::size_t kMaxTableCases = 2'000'000;
-//! Largest table in memory [bytes] (table_memory_bytes). Chosen: 8 GiB, a fixed figure (not a fraction of this
-//! machine's memory) so that a config is valid or not everywhere; the default table takes about 1 MB.
-inline constexpr double kMaxTableBytes = 8.0 * 1024.0 * 1024.0 * 1024.0;
+//! Largest table in memory [bytes] (table_memory_bytes): the one limit of every table reader and writer.
+inline constexpr double kMaxTableBytes = tables::kMaxTableBytes;
 
 struct TableConfig {
   std::string source = "default";  //!< file name, for messages and provenance

@@ -11,6 +11,8 @@ namespace ctab::lookup {
 //! Converts an in-memory schema-2 table (as read or generated) into a TableData. A second-axis name other than
 //! the three known ones gives CTAB_ERR_AXES; everything else is checked by validate()/Table::load.
 [[nodiscard]] LoadResult from_tables(const tables::Table& table, TableData& data);
+//! The same, taking `table`'s arrays (moved, or released once converted): `table` is left unspecified.
+[[nodiscard]] LoadResult from_tables(tables::Table&& table, TableData& data);
 //! Reads an HDF5 table (tables::read_table) and converts it.
 [[nodiscard]] LoadResult read_hdf5(const std::string& path, TableData& data);
 //! Loads an HDF5 table or a blob file, chosen by the file's first bytes.
