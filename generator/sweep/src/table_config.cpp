@@ -245,8 +245,9 @@ void read_track(const Reader& r, TableConfig& c) {
 
 void read_material(const Reader& r, TableConfig& c) {
   c.material.youngs_modulus_Pa = r.number("material", "youngs_modulus_Pa", c.material.youngs_modulus_Pa);
-  if (!(c.material.youngs_modulus_Pa > 0.0))
-    r.fail_at(r.line("material", "youngs_modulus_Pa"), "material.youngs_modulus_Pa", "must be positive");
+  if (!kYoungsModulusRange_Pa.contains(c.material.youngs_modulus_Pa))
+    r.fail_at(r.line("material", "youngs_modulus_Pa"), "material.youngs_modulus_Pa",
+              std::string("expected ") + kYoungsModulusRange_Pa.expectation);
   c.material.poisson_ratio = r.number("material", "poisson_ratio", c.material.poisson_ratio);
   if (!is_valid(c.material))
     r.fail_at(r.line("material", "poisson_ratio"), "material.poisson_ratio", "must lie in (-1, 0.5)");
@@ -352,6 +353,9 @@ void read_axes(const Reader& r, TableConfig& c) {
   if (!dy) r.fail_at(r.line("axes", ""), "axes.lateral_displacement_m", "required ({start, stop, step})");
   if (!dy->is_table()) r.fail(*dy, "axes.lateral_displacement_m", "expected {start, stop, step} (a uniform axis)");
   c.lateral_displacement_m = r.axis(*dy, "axes.lateral_displacement_m");
+  if (c.lateral_displacement_m.size() < 2)  // the lookup interpolates between two lateral shifts at least
+    r.fail(*dy, "axes.lateral_displacement_m",
+           "gives one lateral shift; a table needs at least 2 (stop >= start + step)");
   if (const toml::node* zones = r.find("axes", "lateral_refinement_m"))
     c.lateral_displacement_m = refined_axis(r, *zones, c.lateral_displacement_m);
   const toml::node* load_node = nullptr;
@@ -366,8 +370,11 @@ void read_axes(const Reader& r, TableConfig& c) {
     c.load_kind = kind;
     c.load_values = r.axis(*node, std::string("axes.") + key);
     c.second_axis = !node->value<double>().has_value();
+    const QuantityRange& range = kind == LoadKind::Approach ? kApproachRange_m : kLoadRange_N;
     for (const double v : c.load_values)
-      if (!(v > 0.0)) r.fail(*node, std::string("axes.") + key, "values must be positive");
+      if (!range.contains(v))
+        r.fail(*node, std::string("axes.") + key, "expected " + std::string(range.expectation) + ", got " +
+                                                      number_text(v));
   }
   if (!load_node)
     r.fail_at(r.line("axes", ""), "axes.vertical_load_N",
