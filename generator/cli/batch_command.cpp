@@ -197,6 +197,7 @@ int run_batch_worker(const Ranks& ranks, const gen::BatchManifest& manifest, con
 
 int run_batch(const BatchOptions& o) {
   const gen::BatchManifest manifest = gen::read_batch_manifest(o.manifest);
+  gen::require_table_axes(manifest.base);
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;
   info.git_commit = CTAB_GIT_COMMIT;

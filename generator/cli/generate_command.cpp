@@ -119,6 +119,7 @@ int run_generate_mpi(const MpiSession& session, const gen::TableConfig& config, 
 int run_generate(const GenerateOptions& o) {
   const gen::TableConfig config =
       o.config_path.empty() ? default_table_config("default config") : gen::read_table_config(o.config_path);
+  gen::require_table_axes(config);
   const gen::ShardSpec shard = o.shard.empty() ? gen::ShardSpec{} : gen::parse_shard_spec(o.shard, "--shard");
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;

@@ -16,9 +16,25 @@
 #include "ctab/core/error.hpp"
 #include "error_exit.hpp"
 
+#if defined(__SANITIZE_ADDRESS__)
+#define CTAB_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CTAB_ADDRESS_SANITIZER 1
+#endif
+#endif
+
 namespace ctab::cli {
 
 namespace {
+
+// AddressSanitizer reserves terabytes of address space for its shadow memory: an address-space limit would fail
+// every allocation, so a sanitizer build reads without one (the time limit stays).
+#ifdef CTAB_ADDRESS_SANITIZER
+constexpr bool kLimitAddressSpace = false;
+#else
+constexpr bool kLimitAddressSpace = true;
+#endif
 
 std::uint64_t environment_number(const char* name, std::uint64_t fallback, std::uint64_t max) {
   const char* text = std::getenv(name);
@@ -57,7 +73,7 @@ void injected_fault() {
   rlimit memory{};
   ::getrlimit(RLIMIT_AS, &memory);
   if (memory.rlim_max == RLIM_INFINITY || memory.rlim_max > limits.memory_bytes) memory.rlim_cur = limits.memory_bytes;
-  ::setrlimit(RLIMIT_AS, &memory);  // the soft limit alone: trusted_from_here raises it again
+  if (kLimitAddressSpace) ::setrlimit(RLIMIT_AS, &memory);  // the soft limit alone: trusted_from_here raises it
   ::alarm(limits.seconds);          // SIGALRM's default action ends the child
   IsolatedChild child(reply_fd);
   const int code = finish_standard_output(run_reporting_errors([&] { return body(child); }));

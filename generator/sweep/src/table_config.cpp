@@ -353,9 +353,6 @@ void read_axes(const Reader& r, TableConfig& c) {
   if (!dy) r.fail_at(r.line("axes", ""), "axes.lateral_displacement_m", "required ({start, stop, step})");
   if (!dy->is_table()) r.fail(*dy, "axes.lateral_displacement_m", "expected {start, stop, step} (a uniform axis)");
   c.lateral_displacement_m = r.axis(*dy, "axes.lateral_displacement_m");
-  if (c.lateral_displacement_m.size() < 2)  // the lookup interpolates between two lateral shifts at least
-    r.fail(*dy, "axes.lateral_displacement_m",
-           "gives one lateral shift; a table needs at least 2 (stop >= start + step)");
   if (const toml::node* zones = r.find("axes", "lateral_refinement_m"))
     c.lateral_displacement_m = refined_axis(r, *zones, c.lateral_displacement_m);
   const toml::node* load_node = nullptr;
@@ -465,6 +462,13 @@ SideGeometry place_profiles(const TableConfig& config, const ProfileTable& wheel
     const std::string key = line > 0 ? "track.gauge_height_m" : "profiles.rail";
     throw InputError(config.source, line > 0 ? line : config.key_line("profiles.rail"), "'" + key + "': " + e.what());
   }
+}
+
+void require_table_axes(const TableConfig& config) {
+  if (config.lateral_displacement_m.size() >= 2) return;
+  const std::string key = "axes.lateral_displacement_m";
+  throw InputError(config.source, config.key_line(key),
+                   "'" + key + "': gives one lateral shift; a table needs at least 2 (stop >= start + step)");
 }
 
 TableConfig read_table_config(const std::string& path) {

@@ -97,6 +97,10 @@ struct TableConfig {
 [[nodiscard]] TableConfig parse_table_config(const std::string& text, const std::string& source);
 //! Reads a config file. Throws InputError.
 [[nodiscard]] TableConfig read_table_config(const std::string& path);
+//! A config that makes a table (generate, batch, config) needs at least 2 lateral shifts: the lookup interpolates
+//! between two, and refuses a one-row table. (`solve --config` solves one case of any config.) Throws InputError
+//! naming the file, line and key.
+void require_table_axes(const TableConfig& config);
 
 //! Memory of the table's datasets [bytes]: cases x 2 wheels x patch_slots x (20 scalars + 2 strip_samples) x 8.
 [[nodiscard]] double table_memory_bytes(const TableConfig& config) noexcept;
