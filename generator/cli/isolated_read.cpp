@@ -67,12 +67,24 @@ void injected_fault() {
     for (;;) ::pause();
 }
 
+// The address space this process already maps (inherited by the child: a batch's parent may hold gigabytes).
+std::uint64_t mapped_bytes() {
+  std::FILE* file = std::fopen("/proc/self/statm", "r");
+  unsigned long long pages = 0;
+  if (file != nullptr) {
+    if (std::fscanf(file, "%llu", &pages) != 1) pages = 0;
+    std::fclose(file);
+  }
+  return pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+}
+
 [[noreturn]] void run_child(const std::function<int(IsolatedChild&)>& body, int reply_fd, const ReadLimits& limits) {
   rlimit core{0, 0};
   ::setrlimit(RLIMIT_CORE, &core);  // a crash on a hostile file leaves no core dump
   rlimit memory{};
   ::getrlimit(RLIMIT_AS, &memory);
-  if (memory.rlim_max == RLIM_INFINITY || memory.rlim_max > limits.memory_bytes) memory.rlim_cur = limits.memory_bytes;
+  const std::uint64_t limit = mapped_bytes() + limits.memory_bytes;  // the read's own memory on top of the parent's
+  if (memory.rlim_max == RLIM_INFINITY || memory.rlim_max > limit) memory.rlim_cur = limit;
   if (kLimitAddressSpace) ::setrlimit(RLIMIT_AS, &memory);  // the soft limit alone: trusted_from_here raises it
   ::alarm(limits.seconds);          // SIGALRM's default action ends the child
   IsolatedChild child(reply_fd);

@@ -10,8 +10,8 @@ namespace ctab::cli {
 
 //! The child's limits while it reads untrusted input.
 struct ReadLimits {
-  unsigned seconds = 60;                          //!< wall time (CTAB_READ_TIME_LIMIT_S)
-  std::uint64_t memory_bytes = 8ull << 30;        //!< address space (CTAB_READ_MEMORY_LIMIT_GIB)
+  unsigned seconds = 60;                    //!< wall time (CTAB_READ_TIME_LIMIT_S)
+  std::uint64_t memory_bytes = 8ull << 30;  //!< address space beyond the parent's (CTAB_READ_MEMORY_LIMIT_GIB)
 };
 
 //! The defaults above, or the environment's CTAB_READ_TIME_LIMIT_S (1..86400) and CTAB_READ_MEMORY_LIMIT_GIB
