@@ -16,8 +16,8 @@
 
 #include "ctab/core/error.hpp"
 #include "ctab/lookup/blob.hpp"
-#include "isolated_read.hpp"
 #include "exit_codes.hpp"
+#include "isolated_read.hpp"
 
 namespace ctab::cli {
 
