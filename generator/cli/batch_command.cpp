@@ -20,6 +20,7 @@
 #include "ctab/sweep/batch_manifest.hpp"
 #include "ctab/sweep/table_generator.hpp"
 #include "exit_codes.hpp"
+#include "isolated_read.hpp"
 #ifdef CTAB_WITH_MPI
 #include "mpi_generate.hpp"
 #endif
@@ -91,12 +92,18 @@ void write_index(const std::string& directory, const gen::BatchManifest& manifes
           << o.status << ',' << o.run << ',' << o.wheel_cases << ',' << o.failed_wheel_cases << ',' << o.wheel_sha256
           << ',' << o.rail_sha256 << ',' << o.config_sha256 << ',' << seconds << ',' << csv_field(o.message) << '\n';
     }
-    out.flush();
-    if (!out) throw IoError(path.string() + ": cannot write the batch index");
+    out.close();
+    if (!out) {
+      std::remove(temporary.c_str());  // a full disk leaves the previous index and no temporary
+      throw IoError(path.string() + ": cannot write the batch index");
+    }
   }
   std::error_code error;
   fs::rename(temporary, path, error);
-  if (error) throw IoError(path.string() + ": cannot rename the batch index into place: " + error.message());
+  if (error) {
+    std::remove(temporary.c_str());
+    throw IoError(path.string() + ": cannot rename the batch index into place: " + error.message());
+  }
 }
 
 void count_statuses(const tables::Table& table, PairOutcome& outcome) {
@@ -106,20 +113,32 @@ void count_statuses(const tables::Table& table, PairOutcome& outcome) {
   outcome.status = outcome.failed_wheel_cases > 0 ? "failed-cases" : "ok";
 }
 
-// A table already at `path` that this build made from the same config text and profiles (by their samples).
+// A table already at `path` that this build made from the same config text and profiles (by their samples). Read in
+// a child process (isolated_read.hpp): the directory may hold any file; a corrupt one is an error of its pair.
 bool is_complete(const std::string& path, const gen::TableConfig& config, const gen::SweepSetup& setup,
                  PairOutcome& outcome) {
   if (!fs::is_regular_file(path)) return false;
-  tables::Table table;
-  if (!tables::read_table(path, table).ok()) return false;
-  const auto& a = table.text_attributes;
-  auto has = [&](const char* name, const std::string& value) { return a.count(name) && a.at(name) == value; };
-  if (!(has("config", config.text) && has("wheel_profile", config.wheel) && has("rail_profile", config.rail) &&
-        has("generator_version", CTAB_VERSION) && has("git_commit", CTAB_GIT_COMMIT) &&
-        has("wheel_profile_sha256", samples_sha256(*setup.wheel)) &&
-        has("rail_profile_sha256", samples_sha256(*setup.rail))))
-    return false;
-  count_statuses(table, outcome);
+  const IsolatedResult result = run_isolated([&](IsolatedChild& child) {
+    tables::Table table;
+    child.reading(path);
+    if (!tables::read_table(path, table).ok()) return 1;
+    child.trusted_from_here();
+    const auto& a = table.text_attributes;
+    auto has = [&](const char* name, const std::string& value) { return a.count(name) && a.at(name) == value; };
+    if (!(has("config", config.text) && has("wheel_profile", config.wheel) && has("rail_profile", config.rail) &&
+          has("generator_version", CTAB_VERSION) && has("git_commit", CTAB_GIT_COMMIT) &&
+          has("wheel_profile_sha256", samples_sha256(*setup.wheel)) &&
+          has("rail_profile_sha256", samples_sha256(*setup.rail))))
+      return 1;
+    PairOutcome counted;
+    count_statuses(table, counted);
+    child.reply(std::to_string(counted.wheel_cases) + " " + std::to_string(counted.failed_wheel_cases));
+    return 0;
+  });
+  if (result.exit_code != 0) return false;
+  std::istringstream counts(result.reply);
+  counts >> outcome.wheel_cases >> outcome.failed_wheel_cases;
+  outcome.status = outcome.failed_wheel_cases > 0 ? "failed-cases" : "ok";
   return true;
 }
 
@@ -178,6 +197,7 @@ int run_batch_worker(const Ranks& ranks, const gen::BatchManifest& manifest, con
 
 int run_batch(const BatchOptions& o) {
   const gen::BatchManifest manifest = gen::read_batch_manifest(o.manifest);
+  gen::require_table_axes(manifest.base);
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;
   info.git_commit = CTAB_GIT_COMMIT;
@@ -210,7 +230,7 @@ int run_batch(const BatchOptions& o) {
       const auto is_resumed = [&] {
         const gen::SweepSetup setup = gen::make_sweep_setup(config);  // a bad profile throws here
         if (is_complete(path, config, setup, outcome)) return true;
-        check_output_path(path, "", false);
+        check_output_path(path, {o.manifest, pair.wheel, pair.rail}, OutputKind::Table, false);
         return false;
       };
       const std::optional<tables::Table> table =

@@ -23,6 +23,7 @@ int run_config(const ConfigOptions& o) {
   }
   if (o.path.empty()) throw gen::InputError("config", 0, "give --print-default or a config FILE.toml to check");
   const gen::TableConfig config = gen::read_table_config(o.path);
+  gen::require_table_axes(config);
   std::printf("%s: valid; %zu lateral shifts x %zu %s, %s mode, %s\n", o.path.c_str(),
               config.lateral_displacement_m.size(), config.load_values.size(), gen::load_axis_name(config.load_kind),
               config.mode == gen::ContactMode::Wheelset ? "wheelset" : "wheel",

@@ -1,6 +1,11 @@
 // `ctab export FILE --format blob|c-header -o OUT [--single-precision] [--name IDENT]`: a table (HDF5 or blob) as
 // a lookup blob or as a C header of constant arrays, for targets without HDF5 or a file system.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -9,6 +14,10 @@
 #include "ctab/lookup/blob.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
 #include "ctab/lookup/table.hpp"
+#include "exit_codes.hpp"
+#include "isolated_read.hpp"
+#include "load_errors.hpp"
+#include "output_guard.hpp"
 
 namespace ctab::cli {
 
@@ -16,31 +25,43 @@ namespace {
 
 struct ExportOptions {
   std::string input, output, format = "blob", name = "ctab_table_blob";
-  bool single_precision = false;
+  bool single_precision = false, force = false;
 };
 
-//! Writes `bytes` to `path` through a temporary file renamed on success (no partial output under `path`).
+//! Writes `bytes` to `path` through a temporary file renamed on success (no partial output under `path`); a failure
+//! (a full disk) is an IoError and leaves `path` as it was.
 void write_atomically(const std::string& path, const void* bytes, std::size_t size) {
-  const std::string temporary = path + ".tmp-export";
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (file == nullptr) throw gen::Error(path + ": cannot open for writing");
-  const bool written = std::fwrite(bytes, 1, size, file) == size;
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed || std::rename(temporary.c_str(), path.c_str()) != 0) {
+  const std::string temporary = temporary_table_path(path);
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw IoError(path + ": cannot open for writing: " + std::strerror(errno));
+  int error = 0;
+  for (std::size_t done = 0; done < size && error == 0;) {
+    const ssize_t n = ::write(fd, static_cast<const char*>(bytes) + done, size - done);
+    if (n > 0) done += static_cast<std::size_t>(n);
+    else if (n == 0) error = EIO;
+    else if (errno != EINTR) error = errno;
+  }
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;
+  if (error != 0) {
     std::remove(temporary.c_str());
-    throw gen::Error(path + ": write failed");
+    throw IoError(path + ": cannot write: " + std::strerror(error));
   }
 }
 
-int run_export(const ExportOptions& o) {
+// In a child process (isolated_read.hpp): the input may be an HDF5 table from anywhere.
+int export_table(const ExportOptions& o, IsolatedChild& child) {
   lookup::TableData data;
   bool single = false;
-  lookup::LoadResult result = lookup::read_any(o.input, data, single);
-  if (!result.ok()) throw gen::Error(result.message);
+  child.reading(o.input);
+  throw_if_failed(lookup::read_any(o.input, data, single));
   lookup::Table check;  // the same checks a target's load makes
-  result = check.load(data, {});
-  if (!result.ok()) throw gen::Error(o.input + ": " + result.message);
+  lookup::LoadResult result = check.load(data, {});
+  if (!result.ok()) result.message = o.input + ": " + result.message;
+  throw_if_failed(result);
+  child.trusted_from_here();
   const std::vector<unsigned char> blob = lookup::write_blob(data, o.single_precision || single);
+  const InterruptCleanup cleanup(o.output);
   if (o.format == "blob") {
     write_atomically(o.output, blob.data(), blob.size());
   } else {
@@ -53,6 +74,11 @@ int run_export(const ExportOptions& o) {
   return 0;
 }
 
+int run_export(const ExportOptions& o) {
+  check_output_path(o.output, {o.input}, OutputKind::Export, o.force);
+  return run_isolated([&](IsolatedChild& child) { return export_table(o, child); }).exit_code;
+}
+
 }  // namespace
 
 Command add_export_command(CLI::App& parent) {
@@ -61,7 +87,10 @@ Command add_export_command(CLI::App& parent) {
       parent.add_subcommand("export", "Write a table as a lookup blob or a C header (targets without HDF5)");
   app->add_option("file", o->input, "table (.h5 or blob)")->required();
   app->add_option("--format", o->format, "blob (default) or c-header")->check(CLI::IsMember({"blob", "c-header"}));
-  app->add_option("-o,--output", o->output, "output file")->required();
+  app->add_option("-o,--output", o->output,
+                  "output file; replaced only on success, and only if it is a blob or a header export wrote")
+      ->required();
+  app->add_flag("--force", o->force, "replace OUTPUT even if it is a ctab table (never anything else)");
   app->add_flag("--single-precision", o->single_precision, "store values as float (half the size)");
   app->add_option("--name", o->name, "C identifier of the array (c-header; default ctab_table_blob)")
       ->check([](const std::string& s) {

@@ -35,6 +35,11 @@ struct GenerateOptions {
   std::string shard;  // "K/N" or empty
 };
 
+// The files a run reads (built-in profile names match no file): `-o` never replaces one of them.
+std::vector<std::string> inputs_of(const gen::TableConfig& config, const GenerateOptions& o) {
+  return {o.config_path, config.wheel, config.rail};
+}
+
 // Failed cases are always reported (also with --quiet): the table is written, the statuses say which.
 bool report_failed_cases(const std::map<int, std::size_t>& counts, const std::string& output) {
   std::size_t failed = 0, total = 0;
@@ -101,7 +106,7 @@ int run_generate_mpi(const MpiSession& session, const gen::TableConfig& config, 
   const auto start = std::chrono::steady_clock::now();
   ProgressReporter reporter(o.quiet || !root, "ctab generate");
   const auto progress = [&](std::size_t d, std::size_t t) { reporter(d, t); };
-  const auto checks = [&] { check_output_path(o.output, o.config_path, o.force); };
+  const auto checks = [&] { check_output_path(o.output, inputs_of(config, o), OutputKind::Table, o.force); };
   const std::optional<tables::Table> table = generate_table_mpi(session, config, info, checks, progress);
   if (!table) return kExitSuccess;  // a worker: rank 0 writes the table and reports
   const double seconds = seconds_since(start);
@@ -114,6 +119,7 @@ int run_generate_mpi(const MpiSession& session, const gen::TableConfig& config, 
 int run_generate(const GenerateOptions& o) {
   const gen::TableConfig config =
       o.config_path.empty() ? default_table_config("default config") : gen::read_table_config(o.config_path);
+  gen::require_table_axes(config);
   const gen::ShardSpec shard = o.shard.empty() ? gen::ShardSpec{} : gen::parse_shard_spec(o.shard, "--shard");
   gen::GeneratorInfo info;
   info.version = CTAB_VERSION;
@@ -129,7 +135,7 @@ int run_generate(const GenerateOptions& o) {
     return run_generate_mpi(session, config, info, o);
   }
 #endif
-  check_output_path(o.output, o.config_path, o.force);  // before the sweep: a bad output costs no solving time
+  check_output_path(o.output, inputs_of(config, o), OutputKind::Table, o.force);  // before the sweep: a bad output costs no solving time
   const InterruptCleanup cleanup(o.output);
   const auto start = std::chrono::steady_clock::now();
   ProgressReporter reporter(o.quiet, "ctab generate");
@@ -153,9 +159,9 @@ Command add_generate_command(CLI::App& parent) {
   app->add_option("config", o->config_path,
                   "TOML config (default: `ctab config --print-default`: S1002 on UIC60 1:40, "
                   "wheelset, -12..12 mm, 78.5 kN)");
-  app->add_option("-o,--output", o->output, "output table; replaced only on success, and only if it is a table")
+  app->add_option("-o,--output", o->output, "output table; replaced only on success, and only if it is a ctab table")
       ->capture_default_str();
-  app->add_flag("--force", o->force, "replace OUTPUT even if it is not an HDF5 table (a symlink, FIFO, other file)");
+  app->add_flag("--force", o->force, "replace OUTPUT even if it is a ctab blob (never anything else)");
   add_threads_option(*app, o->threads);
   app->add_option("--shard", o->shard,
                   "K/N: solve only shard K of N (1 <= K <= N) into a shard file for `ctab merge` (job arrays)");

@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "ctab/core/error.hpp"
 #include "ctab/tables/table.hpp"
+#include "isolated_read.hpp"
 
 namespace ctab::cli {
 
@@ -94,14 +95,21 @@ void print_text(const std::string& path, const nlohmann::ordered_json& s) {
                 j["second"].get<double>(), j["dy_low_m"].get<double>() * 1e3, j["dy_high_m"].get<double>() * 1e3);
 }
 
+// In a child process (isolated_read.hpp). Attribute texts are the file's bytes: JSON output replaces invalid UTF-8
+// with U+FFFD.
 int run_inspect(const std::string& path, bool json) {
-  tables::Table t;
-  const tables::TableResult result = tables::read_table(path, t);
-  if (!result.ok()) throw gen::Error(result.message);
-  const nlohmann::ordered_json s = summary(t);
-  if (json) std::cout << s.dump(1) << '\n';
-  else print_text(path, s);
-  return 0;
+  return run_isolated([&](IsolatedChild& child) {
+           tables::Table t;
+           child.reading(path);
+           const tables::TableResult result = tables::read_table(path, t);
+           if (!result.ok()) throw gen::Error(result.message);
+           child.trusted_from_here();
+           const nlohmann::ordered_json s = summary(t);
+           if (json) std::cout << s.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n';
+           else print_text(path, s);
+           return 0;
+         })
+      .exit_code;
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 #include "commands.hpp"
 #include "ctab/core/error.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
+#include "isolated_read.hpp"
+#include "load_errors.hpp"
 
 namespace ctab::cli {
 
@@ -137,11 +139,12 @@ void compare_single(const lookup::Table& full, const lookup::Table& single, cons
               p.dy.size(), worst_scaled, worst_relative);
 }
 
-int run_bench_lookup(const std::string& path, std::size_t queries, int repetitions) {
+int bench_table(const std::string& path, std::size_t queries, int repetitions, IsolatedChild& child) {
   lookup::TableData data;
   bool single_blob = false;
-  const lookup::LoadResult read = lookup::read_any(path, data, single_blob);
-  if (!read.ok()) throw gen::Error(read.message);
+  child.reading(path);
+  throw_if_failed(lookup::read_any(path, data, single_blob));
+  child.trusted_from_here();
   struct Variant {
     const char* label;
     lookup::LoadOptions options;
@@ -170,6 +173,11 @@ int run_bench_lookup(const std::string& path, std::size_t queries, int repetitio
   std::printf("(clock overhead %.1f ns subtracted from single-query times; checksum %g)\n", overhead, sink);
   compare_single(tables[0], tables[1], random_points(tables[0], std::min<std::size_t>(queries, 200000), 99));
   return 0;
+}
+
+// In a child process (isolated_read.hpp): the file may be an HDF5 table from anywhere.
+int run_bench_lookup(const std::string& path, std::size_t queries, int repetitions) {
+  return run_isolated([&](IsolatedChild& child) { return bench_table(path, queries, repetitions, child); }).exit_code;
 }
 
 }  // namespace

@@ -1,34 +1,18 @@
 // ctab: wheel-rail contact tables. One executable, subcommands; exceptions stop here and become exit codes
 // (exit_codes.hpp): 0 success, 2 usage or input error, 3 I/O failure, 4 failed solves or table cases.
 #include <CLI/CLI.hpp>
-#include <cerrno>
+#include <hdf5.h>
+
 #include <csignal>
-#include <cstdio>
 #include <cstring>
-#include <exception>
-#include <filesystem>
-#include <iostream>
 #include <vector>
 
 #include "commands.hpp"
+#include "error_exit.hpp"
 #include "exit_codes.hpp"
 #include "version.hpp"
-#include "ctab/core/error.hpp"
 
 namespace {
-
-// Every command's output reaches standard output or the run fails: a full disk or a closed pipe (SIGPIPE is
-// ignored, so it is a write error here) exits 3 with a message on stderr.
-int finish_standard_output(int code) {
-  std::cout.flush();
-  errno = 0;
-  const bool flushed = std::fflush(stdout) == 0;
-  const int error = errno;
-  if (flushed && !std::ferror(stdout) && std::cout.good()) return code;
-  std::fprintf(stderr, "ctab: error: cannot write to standard output%s%s\n", error ? ": " : "",
-               error ? std::strerror(error) : "");
-  return code == ctab::cli::kExitUsage ? code : ctab::cli::kExitIo;
-}
 
 int run(CLI::App& app, const std::vector<ctab::cli::Command>& commands, int argc, char** argv) {
   using namespace ctab::cli;
@@ -38,23 +22,11 @@ int run(CLI::App& app, const std::vector<ctab::cli::Command>& commands, int argc
     // --help and --version exit 0 (printed on stdout); every other parse error is a usage error.
     return app.exit(e) == 0 ? kExitSuccess : kExitUsage;
   }
-  try {
+  return run_reporting_errors([&] {
     for (const auto& command : commands)
       if (command.app->parsed()) return command.run();
-  } catch (const IoError& e) {
-    std::cerr << "ctab: error: " << e.what() << '\n';
-    return kExitIo;
-  } catch (const ctab::gen::Error& e) {
-    std::cerr << "ctab: error: " << e.what() << '\n';
-    return kExitUsage;
-  } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << "ctab: error: " << e.what() << '\n';
-    return kExitIo;
-  } catch (const std::exception& e) {
-    std::cerr << "ctab: internal error: " << e.what() << '\n';
-    return kExitInternal;
-  }
-  return kExitInternal;
+    return static_cast<int>(kExitInternal);
+  });
 }
 
 // Every subcommand by name and its registration. Registering all eleven took 0.5 ms of every start (CLI11 options
@@ -86,6 +58,9 @@ std::vector<ctab::cli::Command> add_commands(CLI::App& app, int argc, char** arg
 
 int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
+  // No HDF5 clean-up at exit: after a failed write (a full disk) libhdf5 1.10 keeps a file it could not close and
+  // crashes closing it again at exit. Every file ctab opens is closed by its reader or writer before the exit.
+  H5dont_atexit();
   CLI::App app{"ctab - wheel-rail contact tables: MIM-1D normal contact, table generation, real-time lookup"};
   app.set_version_flag("--version", ctab::cli::version_text());
   app.require_subcommand(1);
@@ -93,5 +68,5 @@ int main(int argc, char** argv) {
     return std::string("ctab: error: ") + e.what() + "\nRun with --help for more information.\n";
   });
   const std::vector<ctab::cli::Command> commands = add_commands(app, argc, argv);
-  return finish_standard_output(run(app, commands, argc, argv));
+  return ctab::cli::finish_standard_output(run(app, commands, argc, argv));
 }

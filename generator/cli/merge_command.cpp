@@ -1,7 +1,6 @@
 // `ctab merge SHARD.h5... -o TABLE.h5`: joins the shard files of `ctab generate --shard K/N` into the table a
 // single run gives (generator/sweep/include/ctab/sweep/table_shard.hpp).
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -10,6 +9,7 @@
 #include "ctab/core/error.hpp"
 #include "ctab/sweep/table_shard.hpp"
 #include "exit_codes.hpp"
+#include "isolated_read.hpp"
 #include "output_guard.hpp"
 #include "table_output.hpp"
 
@@ -24,18 +24,17 @@ struct MergeOptions {
   bool quiet = false;
 };
 
-int run_merge(const MergeOptions& o) {
-  check_output_path(o.output, "", o.force);
-  for (const std::string& path : o.shards)
-    if (std::filesystem::exists(o.output) && std::filesystem::equivalent(path, o.output))
-      throw gen::InputError(o.output, 0, "is one of the shards; give another output file");
+// In a child process (isolated_read.hpp): the shards may be HDF5 files from anywhere.
+int merge_files(const MergeOptions& o, IsolatedChild& child) {
   std::vector<gen::ShardFile> shards;
   for (const std::string& path : o.shards) {
     gen::ShardFile shard{path, {}};
+    child.reading(path);
     if (const tables::TableResult read = tables::read_table(path, shard.table); !read.ok())
       throw gen::InputError(path, 0, "cannot be read as a shard: " + read.message);
     shards.push_back(std::move(shard));
   }
+  child.trusted_from_here();
   const tables::Table table = gen::merge_shards(std::move(shards));
   const InterruptCleanup cleanup(o.output);
   write_table_checked(table, o.output);
@@ -50,6 +49,11 @@ int run_merge(const MergeOptions& o) {
   return failed > 0 ? kExitCaseFailed : kExitSuccess;
 }
 
+int run_merge(const MergeOptions& o) {
+  check_output_path(o.output, o.shards, OutputKind::Table, o.force);
+  return run_isolated([&](IsolatedChild& child) { return merge_files(o, child); }).exit_code;
+}
+
 }  // namespace
 
 Command add_merge_command(CLI::App& parent) {
@@ -58,9 +62,9 @@ Command add_merge_command(CLI::App& parent) {
   app->add_option("shards", o->shards, "every shard file of one table (any order)")
       ->required()
       ->check(CLI::ExistingFile);
-  app->add_option("-o,--output", o->output, "output table; replaced only on success, and only if it is a table")
+  app->add_option("-o,--output", o->output, "output table; replaced only on success, and only if it is a ctab table")
       ->required();
-  app->add_flag("--force", o->force, "replace OUTPUT even if it is not an HDF5 table");
+  app->add_flag("--force", o->force, "replace OUTPUT even if it is a ctab blob (never anything else)");
   app->add_flag("--quiet", o->quiet, "no summary (errors and failed cases are still reported)");
   return {app, [o] { return run_merge(*o); }};
 }

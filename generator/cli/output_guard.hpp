@@ -1,18 +1,29 @@
 #pragma once
-//! Safety of `ctab generate -o OUTPUT`: what may be replaced, checked before the sweep, and no temporary file left
-//! behind by an interrupt.
+//! Safety of `-o OUTPUT` (generate, merge, batch, export): what may be replaced, checked before any work, and no
+//! temporary file left behind by an interrupt.
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace ctab::cli {
 
-//! Before any work: refuses (InputError, exit 2) an OUTPUT that is a symbolic link, a FIFO, a device, a directory,
-//! the config file itself, or a regular file that is not an HDF5 file, unless `force`. (Any HDF5 file counts as a
-//! ctab table here, whatever its schema version, so that old tables stay replaceable.) Fails (IoError, exit 3) when
-//! OUTPUT's directory is missing or no file can be created in it (probed by creating and removing the temporary).
-void check_output_path(const std::string& output, const std::string& config_path, bool force);
+//! How the C header `ctab export --format c-header` writes starts (lookup::blob_c_header): the mark of a header that
+//! export may replace.
+inline constexpr std::string_view kExportHeaderStart = "/* ctab contact table blob (";
 
-//! True if the file starts with the HDF5 signature (at offset 0 or at a user-block offset 512, 1024, 2048, ...).
-[[nodiscard]] bool has_hdf5_signature(const std::string& path);
+//! What a command writes to `-o`.
+enum class OutputKind {
+  Table,   //!< an HDF5 contact table (generate, merge, batch)
+  Export,  //!< a lookup blob or the C header `ctab export` writes
+};
+
+//! Before any work: may OUTPUT be replaced by a file of `kind`? A missing OUTPUT may; an existing one only if it is a
+//! regular file (not a symbolic link, device, FIFO, socket or directory), none of `inputs` (fs::equivalent), and a
+//! ctab file: of the same kind (replaced), or of the other kind with `force`. Anything else is refused, --force or not
+//! (InputError, exit 2). Fails (IoError, exit 3) when OUTPUT's directory is missing or no file can be created in it
+//! (probed by creating and removing the temporary).
+void check_output_path(const std::string& output, const std::vector<std::string>& inputs, OutputKind kind,
+                       bool force);
 
 //! The temporary file of tables::write_table for OUTPUT in this process: OUTPUT + ".tmp-" + pid.
 [[nodiscard]] std::string temporary_table_path(const std::string& output);

@@ -13,6 +13,8 @@
 #include "commands.hpp"
 #include "ctab/core/error.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
+#include "isolated_read.hpp"
+#include "load_errors.hpp"
 
 namespace ctab::cli {
 
@@ -32,7 +34,8 @@ constexpr const char* kQuantityNames[CTAB_QUANTITIES] = {"normal_force_N",    "f
                                                          "y_cop_rail_m",      "rolling_radius_m", "semi_axis_a_m",
                                                          "semi_axis_b_m",     "s_min_m",          "s_max_m"};
 
-//! The second-axis value the options give for this table (its only value when it has one).
+//! The second-axis value the options give for this table (its only value when it has one; a table with several
+//! needs the option: no value is picked for the user).
 double second_value(const lookup::Table& table, const QueryOptions& o) {
   const bool approach_axis = table.second_axis_kind() == lookup::SecondAxis::Approach;
   if (o.load_N && approach_axis) throw gen::Error(o.path + ": the second axis is approach_m; use --approach");
@@ -41,14 +44,19 @@ double second_value(const lookup::Table& table, const QueryOptions& o) {
   if (table.n_second() == 1 && given && *given != table.second_axis().front())
     std::fprintf(stderr, "ctab query: note: the table has one %s value (%g); %g ignored\n",
                  lookup::second_axis_name(table.second_axis_kind()), table.second_axis().front(), *given);
-  if (table.n_second() == 1 || !given) return table.second_axis().front();
+  if (table.n_second() == 1) return table.second_axis().front();
+  if (!given)
+    throw gen::Error(o.path + (approach_axis ? ": the table has an approach axis: give --approach"
+                                             : ": the table has a load axis: give --load"));
   return *given;
 }
 
-int run_query(const QueryOptions& o) {
+int query_table(const QueryOptions& o, IsolatedChild& child) {
   lookup::Table table;
+  child.reading(o.path);
   const lookup::LoadResult loaded = lookup::open_file(o.path, {o.pchip ? CTAB_PCHIP : CTAB_LINEAR, false}, table);
-  if (!loaded.ok()) throw gen::Error(loaded.message);
+  throw_if_failed(loaded);
+  child.trusted_from_here();
   ctab_location where;
   table.prelookup(o.dy_m, second_value(table, o), where);
   ctab_result r;
@@ -93,6 +101,11 @@ int run_query(const QueryOptions& o) {
   return 0;
 }
 
+// In a child process (isolated_read.hpp): the file may be an HDF5 table from anywhere.
+int run_query(const QueryOptions& o) {
+  return run_isolated([&](IsolatedChild& child) { return query_table(o, child); }).exit_code;
+}
+
 }  // namespace
 
 Command add_query_command(CLI::App& parent) {
@@ -101,8 +114,8 @@ Command add_query_command(CLI::App& parent) {
       parent.add_subcommand("query", "Interpolate a table at one lateral shift (as the lookup library does)");
   app->add_option("file", o->path, "table (.h5 or blob)")->required();
   app->add_option("--dy", o->dy_m, "lateral displacement [m]")->required();
-  auto* load = app->add_option("--load", o->load_N, "vertical or normal load [N] (tables with a load axis)");
-  app->add_option("--approach", o->approach_m, "approach [m] (tables with an approach axis)")->excludes(load);
+  auto* load = app->add_option("--load", o->load_N, "vertical or normal load [N] (tables with a load axis of several values: required)");
+  app->add_option("--approach", o->approach_m, "approach [m] (tables with an approach axis of several values: required)")->excludes(load);
   app->add_option("--wheel", o->wheel, "left or right (default right)")->check(CLI::IsMember({"left", "right"}));
   app->add_flag("--pchip", o->pchip, "monotone cubic along dy instead of linear");
   app->add_flag("--strips", o->strips, "include the strip profiles (JSON)");

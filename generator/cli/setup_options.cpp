@@ -56,6 +56,10 @@ void add_hidden_alias(CLI::App& app, const std::string& alias, CLI::Option* main
       ->group("");
 }
 
+NumberRule quantity_rule(const gen::QuantityRange& range) {
+  return {range.expectation, [range](double v) { return range.contains(v); }};
+}
+
 }  // namespace
 
 CLI::Validator finite_range(double min, double max, const std::string& unit) {
@@ -68,6 +72,8 @@ CLI::Validator finite_positive(const std::string& unit, double max) {
   return number_check({"a finite number > 0" + bound + " " + unit,
                        [max](double v) { return std::isfinite(v) && v > 0.0 && v <= max; }});
 }
+
+CLI::Validator quantity_check(const gen::QuantityRange& range) { return number_check(quantity_rule(range)); }
 
 gen::TableConfig default_table_config(const std::string& source) {
   return gen::parse_table_config(gen::kDefaultTableConfig, source);
@@ -224,7 +230,7 @@ void add_contact_surface_options(CLI::App& app, gen::TableConfig& c, AddedOption
 }
 
 void add_material_options(CLI::App& app, gen::TableConfig& c, AddedOptions& added) {
-  const NumberRule youngs{"a finite Young's modulus > 0 in Pa", [](double v) { return std::isfinite(v) && v > 0.0; }};
+  const NumberRule youngs = quantity_rule(gen::kYoungsModulusRange_Pa);
   const NumberRule poisson{"a Poisson's ratio in (-1, 0.5]", [](double v) { return v > -1.0 && v <= 0.5; }};
   CLI::Option* E = keep(added, app.add_option("--youngs-modulus", c.material.youngs_modulus_Pa,
                                               "Young's modulus of both bodies [Pa]")

@@ -44,6 +44,8 @@ void finish_setup_options(gen::TableConfig& config);
 
 //! A CLI11 check: a finite number in [min, max] (NaN and infinities fail), with the unit in the message.
 [[nodiscard]] CLI::Validator finite_range(double min, double max, const std::string& unit);
+//! A CLI11 check: a value in the quantity's range, the same check a config makes (table_config.hpp).
+[[nodiscard]] CLI::Validator quantity_check(const gen::QuantityRange& range);
 //! A CLI11 check: a finite number > 0 (at most `max`).
 [[nodiscard]] CLI::Validator finite_positive(const std::string& unit, double max = 1e300);
 

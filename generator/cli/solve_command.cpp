@@ -32,8 +32,6 @@ struct SolveOptions {
   bool wheelrail_given = false;
 };
 
-constexpr double kMaxApproach_m = 10e-3;  // far beyond any elastic approach; larger values are typing errors
-
 std::string millimetres(double metres) {
   std::ostringstream text;
   text << metres * 1e3 << " mm";
@@ -79,8 +77,9 @@ gen::TableConfig wheelrail_config(const SolveOptions& o, double& load_value) {
       throw gen::InputError("--load", 0,
                             o.config_path + " has a " + axis + " axis of " + std::to_string(config.load_values.size()) +
                                 " values: give --load VALUE");
-    if (config.load_kind == gen::LoadKind::Approach && load_value > kMaxApproach_m)
-      throw gen::InputError("--load", 0, std::string("expected an approach in [0, 0.01] m (") + axis + " config)");
+    if (config.load_kind == gen::LoadKind::Approach && !gen::kApproachRange_m.contains(load_value))
+      throw gen::InputError("--load", 0,
+                            std::string("expected ") + gen::kApproachRange_m.expectation + " (" + axis + " config)");
     return config;
   }
   if (o.load)
@@ -144,9 +143,9 @@ Command add_solve_command(CLI::App& parent) {
   CLI::Option* config = app->add_option("--config", o->config_path,
                                         "table config (TOML): solve its case at --dy [and --load] as `generate` does "
                                         "(no set-up options with it)");
-  const auto load_check = finite_range(0.0, 1e8, "(N; m for an approach_m config)");
+  const auto load_check = quantity_check(gen::kLoadRange_N);
   CLI::Option* approach = app->add_option("--approach", o->approach_m, "prescribed approach [m] (wheel-rail: vertical)")
-                              ->check(finite_range(0.0, kMaxApproach_m, "m"));
+                              ->check(quantity_check(gen::kApproachRange_m));
   app->add_option("--load", o->load, "gap: normal load [N]; with --config: the value on its load axis [N or m]")
       ->check(load_check);
   CLI::Option* normal =

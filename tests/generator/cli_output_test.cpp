@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "cli_run.hpp"
 
@@ -37,7 +38,7 @@ bool is_hdf5(const std::string& path) {
 
 }  // namespace
 
-TEST(CliOutput, RefusesWhatIsNotATableUnlessForced) {
+TEST(CliOutput, ReplacesOnlyCtabFilesNeverAnInputOrAForeignFile) {
   const std::string dir = fresh_directory("refuse");
   const std::string config = ctab::test::write_temp("ctab_output_refuse/small.toml", kSmallConfig);
   const std::string text = ctab::test::write_temp("ctab_output_refuse/notes.txt", "my notes\n");
@@ -46,29 +47,75 @@ TEST(CliOutput, RefusesWhatIsNotATableUnlessForced) {
   struct Case {
     std::string output, expected;
   };
-  const Case cases[] = {{text, "exists and is not an HDF5 contact table; not replaced (use --force"},
-                        {config, "is the config file itself"},
-                        {dir + "link.h5", "is a symbolic link"},
-                        {dir + "fifo.h5", "is not a regular file"},
-                        {"/dev/null", "is not a regular file"},
+  const std::string never = "; ctab never replaces it (not even with --force)";
+  const Case cases[] = {{text, "exists and is not a ctab table" + never},
+                        {config, "is an input of this command" + never},
+                        {dir + "link.h5", "is a symbolic link" + never},
+                        {dir + "fifo.h5", "is not a regular file (a FIFO, socket or device)" + never},
+                        {"/dev/null", "is not a regular file (a FIFO, socket or device)" + never},
                         {dir, "is a directory"}};
-  for (const Case& c : cases) {
-    const CtabRun run = run_ctab({"generate", config, "-o", c.output});
-    EXPECT_EQ(run.exit_code, 2) << c.output << "\n" << run.output();
-    EXPECT_NE(run.err.find(c.output + ": " + c.expected), std::string::npos) << run.err;
-    EXPECT_EQ(run.err.find(" cases"), std::string::npos) << "refused before the sweep: " << run.err;
-  }
+  for (const Case& c : cases)
+    for (const bool force : {false, true}) {
+      std::vector<std::string> arguments = {"generate", config, "-o", c.output};
+      if (force) arguments.push_back("--force");
+      const CtabRun run = run_ctab(arguments);
+      EXPECT_EQ(run.exit_code, 2) << c.output << "\n" << run.output();
+      EXPECT_NE(run.err.find(c.output + ": " + c.expected), std::string::npos) << run.err;
+      EXPECT_EQ(run.err.find(" cases"), std::string::npos) << "refused before the sweep: " << run.err;
+    }
+  struct stat null_status {};
+  ASSERT_EQ(stat("/dev/null", &null_status), 0);
+  EXPECT_TRUE(S_ISCHR(null_status.st_mode)) << "/dev/null is still a device";
   EXPECT_EQ(ctab::test::read_text(text), "my notes\n");
   EXPECT_EQ(ctab::test::read_text(config), kSmallConfig);
-  // An existing table is replaced without --force; anything else with it.
+  // An existing table is replaced without --force.
   const CtabRun first = run_ctab({"generate", config, "-o", dir + "t.h5", "--quiet"});
   ASSERT_EQ(first.exit_code, 0) << first.output();
   EXPECT_EQ(run_ctab({"generate", config, "-o", dir + "t.h5", "--quiet"}).exit_code, 0);
-  const CtabRun forced = run_ctab({"generate", config, "-o", text, "--quiet", "--force"});
-  EXPECT_EQ(forced.exit_code, 0) << forced.output();
-  EXPECT_TRUE(is_hdf5(text));
+  EXPECT_TRUE(is_hdf5(dir + "t.h5"));
   for (const auto& entry : fs::directory_iterator(dir))
     EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << "left behind: " << entry.path();
+}
+
+// A blob where a table goes (and a table where an export goes) needs --force; a foreign HDF5 file is never replaced.
+TEST(CliOutput, TheOtherCtabKindNeedsForce) {
+  const std::string dir = fresh_directory("kinds");
+  const std::string config = ctab::test::write_temp("ctab_output_kinds/small.toml", kSmallConfig);
+  ASSERT_EQ(run_ctab({"generate", config, "-o", dir + "t.h5", "--quiet"}).exit_code, 0);
+  ASSERT_EQ(run_ctab({"export", dir + "t.h5", "-o", dir + "t.blob"}).exit_code, 0);
+  ASSERT_EQ(run_ctab({"export", dir + "t.h5", "-o", dir + "t.h", "--format", "c-header"}).exit_code, 0);
+  ASSERT_EQ(run_ctab({"generate", config, "-o", dir + "u.h5", "--quiet"}).exit_code, 0);
+  // export replaces its own kinds (a blob, a header it wrote) without --force
+  EXPECT_EQ(run_ctab({"export", dir + "t.h5", "-o", dir + "t.blob"}).exit_code, 0);
+  EXPECT_EQ(run_ctab({"export", dir + "t.h5", "-o", dir + "t.h", "--format", "c-header"}).exit_code, 0);
+  EXPECT_EQ(run_ctab({"export", dir + "t.h5", "-o", dir + "t.h"}).exit_code, 0) << "a header by a blob";
+  const CtabRun blob_as_table = run_ctab({"generate", config, "-o", dir + "t.blob", "--quiet"});
+  EXPECT_EQ(blob_as_table.exit_code, 2);
+  EXPECT_NE(blob_as_table.err.find("is a ctab blob or exported header, not a table; not replaced (use --force"),
+            std::string::npos)
+      << blob_as_table.err;
+  EXPECT_EQ(run_ctab({"generate", config, "-o", dir + "t.blob", "--quiet", "--force"}).exit_code, 0);
+  EXPECT_TRUE(is_hdf5(dir + "t.blob"));
+  const CtabRun table_as_blob = run_ctab({"export", dir + "t.h5", "-o", dir + "u.h5"});
+  EXPECT_EQ(table_as_blob.exit_code, 2);
+  EXPECT_NE(table_as_blob.err.find("is a ctab table, not a blob; not replaced (use --force"), std::string::npos)
+      << table_as_blob.err;
+  EXPECT_EQ(run_ctab({"export", dir + "t.h5", "-o", dir + "u.h5", "--force"}).exit_code, 0);
+  // its own input: never, and the input stays as it was
+  const std::string before = ctab::test::read_text(dir + "t.h5");
+  for (const bool force : {false, true}) {
+    std::vector<std::string> arguments = {"export", dir + "t.h5", "-o", dir + "t.h5"};
+    if (force) arguments.push_back("--force");
+    const CtabRun self = run_ctab(arguments);
+    EXPECT_EQ(self.exit_code, 2) << self.output();
+    EXPECT_NE(self.err.find("is an input of this command; ctab never replaces it"), std::string::npos) << self.err;
+  }
+  EXPECT_EQ(ctab::test::read_text(dir + "t.h5"), before);
+  // merge: a shard is an input
+  ASSERT_EQ(run_ctab({"generate", config, "-o", dir + "shard.h5", "--quiet"}).exit_code, 0);
+  const CtabRun merge_self = run_ctab({"merge", dir + "shard.h5", "-o", dir + "shard.h5", "--force"});
+  EXPECT_EQ(merge_self.exit_code, 2);
+  EXPECT_NE(merge_self.err.find("is an input of this command"), std::string::npos) << merge_self.err;
 }
 
 TEST(CliOutput, UnwritableOrMissingDirectoryFailsBeforeTheSweep) {

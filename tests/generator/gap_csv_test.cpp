@@ -43,6 +43,9 @@ TEST(GapCsv, RejectsMalformedInputWithFileLineAndField) {
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n0,0,1,1\n"),
             "gap.csv:3: field 'y_m': strips must be strictly increasing in y");
   EXPECT_EQ(error_of(kHeader + "0,0,-1,1\n"), "gap.csv:2: field 'A_per_m': must be positive, got '-1'");
+  EXPECT_EQ(error_of(kHeader + "0,0,1,1\n1e-3,-1,1,1\n"),
+            "gap.csv:3: field 'h_m': a separation must not be negative (the bodies' gap before loading), got '-1'");
+  EXPECT_EQ(error_of(kHeader + "-1e-3,1e-6,1,1\n0,-1e-10,1,1\n1e-3,1e-6,1,1\n"), "no error") << "rounding of 0";
   EXPECT_EQ(error_of(kHeader + "0,0,1,1\n1e-3,0,1,1\n"), "gap.csv:3: need at least 3 rows of gap data, got 2");
   EXPECT_EQ(error_of(kHeader), "gap.csv:1: need at least 3 rows of gap data, got 0");
 }

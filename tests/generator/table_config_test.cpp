@@ -290,4 +290,26 @@ TEST(TableConfig, ReferencePointAndAngleMakeOneRule) {
   EXPECT_FALSE(reference_rule(true, ReferenceAngle::Tangent).has_value());
   EXPECT_EQ(reference_angle_name(ReferenceRule::InterpenetrationCentre), "interpenetration-mean");
   EXPECT_EQ(reference_point_name(ReferenceRule::DeepestTangent), "deepest");
+
+TEST(TableConfig, LoadsAndModulusAreInTheirPhysicalRanges) {
+  EXPECT_EQ(error_of("[axes]\nlateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n"
+                     "vertical_load_N = 1e12\n"),
+            "c.toml:3: 'axes.vertical_load_N': expected a load in (0, 1e8] N, got 1e+12");
+  EXPECT_EQ(error_of(kAxis + "[material]\nyoungs_modulus_Pa = 1e-21\n"),
+            "c.toml:5: 'material.youngs_modulus_Pa': expected a Young's modulus in (1e6, 1e13] Pa");
+  EXPECT_EQ(error_of(kAxis + "[material]\nyoungs_modulus_Pa = 210e9\n"), "no error");
+}
+
+TEST(TableConfig, ATableNeedsTwoLateralShifts) {
+  for (const char* range : {"{ start = 1e-3, stop = 1e-3, step = 1e-4 }", "{ start = 0, stop = 1e-3, step = 2e-3 }"}) {
+    const TableConfig config = parse_table_config(dy_axis(range), "c.toml");  // a config for one solve
+    try {
+      require_table_axes(config);
+      ADD_FAILURE() << range << " makes a one-row table";
+    } catch (const InputError& e) {
+      EXPECT_STREQ(e.what(), "c.toml:2: 'axes.lateral_displacement_m': gives one lateral shift; a table needs at least 2 "
+                             "(stop >= start + step)");
+    }
+  }
+  EXPECT_NO_THROW(require_table_axes(parse_table_config(kAxis, "c.toml")));
 }

@@ -19,6 +19,8 @@ namespace ctab::gen {
 namespace {
 
 constexpr std::array<std::string_view, 4> kColumns = {"y_m", "h_m", "A_per_m", "B_per_m"};
+// h is the separation of the undeformed bodies: never negative beyond the rounding of a computed gap (1 nm).
+constexpr double kMinSeparation_m = -1e-9;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
@@ -98,6 +100,10 @@ GapProfile parse_gap_csv(std::istream& in, const std::string& source) {
         throw InputError(source, line_number, "field '" + std::string(kColumns[c]) + "': value is not finite");
       values[c] = *value;
     }
+    if (!(values[1] >= kMinSeparation_m))
+      throw InputError(source, line_number,
+                       "field 'h_m': a separation must not be negative (the bodies' gap before loading), got " +
+                           quote_user_text(fields[column_index[1]]));
     if (!(values[2] > 0.0))
       throw InputError(source, line_number,
                        "field 'A_per_m': must be positive, got " + quote_user_text(fields[column_index[2]]));

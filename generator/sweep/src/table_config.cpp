@@ -241,8 +241,9 @@ void read_track(const Reader& r, TableConfig& c) {
 
 void read_material(const Reader& r, TableConfig& c) {
   c.material.youngs_modulus_Pa = r.number("material", "youngs_modulus_Pa", c.material.youngs_modulus_Pa);
-  if (!(c.material.youngs_modulus_Pa > 0.0))
-    r.fail_at(r.line("material", "youngs_modulus_Pa"), "material.youngs_modulus_Pa", "must be positive");
+  if (!kYoungsModulusRange_Pa.contains(c.material.youngs_modulus_Pa))
+    r.fail_at(r.line("material", "youngs_modulus_Pa"), "material.youngs_modulus_Pa",
+              std::string("expected ") + kYoungsModulusRange_Pa.expectation);
   c.material.poisson_ratio = r.number("material", "poisson_ratio", c.material.poisson_ratio);
   if (!is_valid(c.material))
     r.fail_at(r.line("material", "poisson_ratio"), "material.poisson_ratio", "must lie in (-1, 0.5)");
@@ -363,8 +364,11 @@ void read_axes(const Reader& r, TableConfig& c) {
     c.load_kind = kind;
     c.load_values = r.axis(*node, std::string("axes.") + key);
     c.second_axis = !node->value<double>().has_value();
+    const QuantityRange& range = kind == LoadKind::Approach ? kApproachRange_m : kLoadRange_N;
     for (const double v : c.load_values)
-      if (!(v > 0.0)) r.fail(*node, std::string("axes.") + key, "values must be positive");
+      if (!range.contains(v))
+        r.fail(*node, std::string("axes.") + key, "expected " + std::string(range.expectation) + ", got " +
+                                                      number_text(v));
   }
   if (!load_node)
     r.fail_at(r.line("axes", ""), "axes.vertical_load_N",
@@ -455,6 +459,13 @@ SideGeometry place_profiles(const TableConfig& config, const ProfileTable& wheel
     const std::string key = line > 0 ? "track.gauge_height_m" : "profiles.rail";
     throw InputError(config.source, line > 0 ? line : config.key_line("profiles.rail"), "'" + key + "': " + e.what());
   }
+}
+
+void require_table_axes(const TableConfig& config) {
+  if (config.lateral_displacement_m.size() >= 2) return;
+  const std::string key = "axes.lateral_displacement_m";
+  throw InputError(config.source, config.key_line(key),
+                   "'" + key + "': gives one lateral shift; a table needs at least 2 (stop >= start + step)");
 }
 
 TableConfig read_table_config(const std::string& path) {

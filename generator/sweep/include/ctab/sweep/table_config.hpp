@@ -34,6 +34,20 @@ inline constexpr std::size_t kMaxTableCases = 2'000'000;
 //! Largest table in memory [bytes] (table_memory_bytes): the one limit of every table reader and writer.
 inline constexpr double kMaxTableBytes = tables::kMaxTableBytes;
 
+//! A physically sensible range of one quantity that both a config and the CLI's options take (docs/cli.md
+//! "Ranges"): one check per quantity, whichever way the value comes in.
+struct QuantityRange {
+  double low, high;         //!< low excluded, high included
+  const char* expectation;  //!< for messages: what a value must be
+  [[nodiscard]] constexpr bool contains(double value) const noexcept { return value > low && value <= high; }
+};
+//! A wheel's vertical or normal load [N]: 1e8 N is a thousand times the heaviest axle load in service.
+inline constexpr QuantityRange kLoadRange_N{0.0, 1e8, "a load in (0, 1e8] N"};
+//! A prescribed approach [m]: far beyond any elastic approach; larger values are typing errors.
+inline constexpr QuantityRange kApproachRange_m{0.0, 10e-3, "an approach in (0, 0.01] m"};
+//! Young's modulus [Pa]: from soft rubber (1e6) to beyond diamond (1.2e12).
+inline constexpr QuantityRange kYoungsModulusRange_Pa{1e6, 1e13, "a Young's modulus in (1e6, 1e13] Pa"};
+
 struct TableConfig {
   std::string source = "default";  //!< file name, for messages and provenance
   std::string text;                //!< the full config text (provenance)
@@ -80,6 +94,10 @@ struct TableConfig {
 [[nodiscard]] TableConfig parse_table_config(const std::string& text, const std::string& source);
 //! Reads a config file. Throws InputError.
 [[nodiscard]] TableConfig read_table_config(const std::string& path);
+//! A config that makes a table (generate, batch, config) needs at least 2 lateral shifts: the lookup interpolates
+//! between two, and refuses a one-row table. (`solve --config` solves one case of any config.) Throws InputError
+//! naming the file, line and key.
+void require_table_axes(const TableConfig& config);
 
 //! Memory of the table's datasets [bytes]: cases x 2 wheels x patch_slots x (20 scalars + 2 strip_samples) x 8.
 [[nodiscard]] double table_memory_bytes(const TableConfig& config) noexcept;
