@@ -60,7 +60,10 @@ int export_table(const ExportOptions& o, IsolatedChild& child) {
   if (!result.ok()) result.message = o.input + ": " + result.message;
   throw_if_failed(result);
   child.trusted_from_here();
-  const std::vector<unsigned char> blob = lookup::write_blob(data, o.single_precision || single);
+  std::vector<unsigned char> blob;  // refused where single precision cannot hold a value
+  lookup::LoadResult written = lookup::write_blob(data, o.single_precision || single, blob);
+  if (!written.ok()) written.message = o.input + ": " + written.message;
+  throw_if_failed(written);
   const InterruptCleanup cleanup(o.output);
   if (o.format == "blob") {
     write_atomically(o.output, blob.data(), blob.size());

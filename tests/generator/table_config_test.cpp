@@ -290,6 +290,7 @@ TEST(TableConfig, ReferencePointAndAngleMakeOneRule) {
   EXPECT_FALSE(reference_rule(true, ReferenceAngle::Tangent).has_value());
   EXPECT_EQ(reference_angle_name(ReferenceRule::InterpenetrationCentre), "interpenetration-mean");
   EXPECT_EQ(reference_point_name(ReferenceRule::DeepestTangent), "deepest");
+}
 
 TEST(TableConfig, LoadsAndModulusAreInTheirPhysicalRanges) {
   EXPECT_EQ(error_of("[axes]\nlateral_displacement_m = { start = -1e-3, stop = 1e-3, step = 1e-3 }\n"
