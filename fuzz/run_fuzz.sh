@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets of a CTAB_FUZZ build (docs/fuzzing.md), one after the other, each for SECONDS:
 #   fuzz/run_fuzz.sh BUILD_DIR SECONDS TARGET...
-# First every saved finding of a target (fuzz/findings/TARGET-*.bin) is run once, as a regression input; then the
-# target fuzzes from its working corpus BUILD_DIR/fuzz-corpus/TARGET (kept between runs, so `make fuzz` goes on
-# where it stopped) and the seeds of fuzz/corpus/TARGET. A crash, a sanitizer report, a leak, an input slower than
-# 20 s or over 2 GB is a failure: the input lands in BUILD_DIR/fuzz-findings/, and the script exits 1 once every
+# First every saved finding of a target (fuzz/findings/TARGET-*.bin) is run once, as a regression input (a failure
+# fails the script, and the target is fuzzed all the same); then the target fuzzes from its working corpus
+# BUILD_DIR/fuzz-corpus/TARGET (kept between runs, so `make fuzz` goes on where it stopped) and the seeds of
+# fuzz/corpus/TARGET. A crash, a sanitizer report, a leak, an input slower than 20 s or over 2 GB is a failure: the
+# input lands in BUILD_DIR/fuzz-findings/, and the script exits 1 once every
 # target has run. Prints each target's executions and executions per second.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -20,10 +21,9 @@ for target in "$@"; do
   binary=$build/bin/fuzz_$target
   log=$build/fuzz-findings/$target.log
   findings=(fuzz/findings/"$target"-*.bin)
-  if [ -e "${findings[0]}" ] && ! "$binary" "${findings[@]}" > "$log" 2>&1; then
-    echo "fuzz: $target: a saved finding still fails (fuzz/findings/$target-*.bin); log: $log"
+  if [ -e "${findings[0]}" ] && ! "$binary" "${findings[@]}" > "$log.findings" 2>&1; then
+    echo "fuzz: $target: a saved finding still fails (fuzz/findings/$target-*.bin); log: $log.findings"
     failed+=("$target")
-    continue
   fi
   mkdir -p "$build/fuzz-corpus/$target"
   start=$SECONDS
