@@ -37,7 +37,7 @@ for target in "$@"; do
   if [ "$status" -ne 0 ]; then
     grep -E "^(==[0-9]+==ERROR|SUMMARY|.*runtime error)" "$log" | head -n 5
     echo "fuzz: $target: FAILED; the input is in $build/fuzz-findings/ (log: $log)"
-    failed+=("$target")
+    [[ " ${failed[*]} " == *" $target "* ]] || failed+=("$target")
   fi
 done
 if [ ${#failed[@]} -gt 0 ]; then
