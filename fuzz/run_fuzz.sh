@@ -13,8 +13,12 @@ build=$1 seconds=$2
 shift 2
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-# The targets' scratch files (readers that take a path) in memory where /dev/shm exists.
-[ -d /dev/shm ] && export TMPDIR=${TMPDIR:-/dev/shm}
+# The targets' scratch files (readers that take a path) in a directory of this run, in memory where /dev/shm exists.
+base=${TMPDIR:-/tmp}
+[ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && base=/dev/shm
+TMPDIR=$(mktemp -d "$base/ctab-fuzz.XXXXXX")
+export TMPDIR
+trap 'rm -rf "$TMPDIR"' EXIT
 mkdir -p "$build/fuzz-findings"
 failed=()
 for target in "$@"; do
