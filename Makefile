@@ -11,8 +11,14 @@ SANITIZE_FLAGS ?= -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sani
 SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1 \
 	UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/support/lsan.supp:print_suppressions=0
+# `make fuzz-ci` / `make fuzz`: the libFuzzer targets of fuzz/ (clang, ASan + UBSan) in build-fuzz, each run for
+# FUZZ_CI_SECONDS (CI) or FUZZ_SECONDS (a longer local run); docs/fuzzing.md.
+FUZZ_DIR ?= build-fuzz
+FUZZ_CI_SECONDS ?= 45
+FUZZ_SECONDS ?= 600
+FUZZ_TARGETS ?= blob hdf5_table profile gap_csv table_config
 
-.PHONY: all deps configure build run test sanitize bench clean
+.PHONY: all deps configure build run test sanitize fuzz-deps fuzz-build fuzz-ci fuzz bench clean
 
 all: build
 
@@ -44,10 +50,27 @@ sanitize: deps
 	$(SANITIZE_ENV) cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && $(SANITIZE_ENV) ctest --output-on-failure -j $(JOBS) -LE slow
 
+# Clang and its sanitizer and libFuzzer runtimes are installed only here, not for `make test`.
+fuzz-deps:
+	@scripts/install_deps.sh --fuzz
+
+# -O1 -g1 as the sanitizer build; only the libraries the targets link (no CLI, tests or benchmarks).
+fuzz-build: fuzz-deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1" -DCTAB_FUZZ=ON \
+	  -DCTAB_BUILD_TESTS=OFF -DCTAB_BUILD_BENCH=OFF -DCTAB_INSTALL=OFF
+	cmake --build $(FUZZ_DIR) -j $(JOBS) --target ctab_fuzz_targets
+
+fuzz-ci: fuzz-build
+	fuzz/run_fuzz.sh $(FUZZ_DIR) $(FUZZ_CI_SECONDS) $(FUZZ_TARGETS)
+
+fuzz: fuzz-build
+	fuzz/run_fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
 bench: build
 	$(BUILD_DIR)/bin/ctab bench solver
 	$(BUILD_DIR)/bin/ctab bench wheelrail
 	$(BUILD_DIR)/bin/ctab_solver_bench
 
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR)
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR)

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #if defined(__x86_64__) && defined(__GNUC__)
+#include <cpuid.h>
 #include <immintrin.h>
 #define CTAB_SHA256_X86 1
 #endif
@@ -136,7 +137,12 @@ std::string digest(const void* data, std::size_t size, Compress compress) {
 
 bool sha256_has_cpu_extensions() noexcept {
 #ifdef CTAB_SHA256_X86
-  static const bool available = __builtin_cpu_supports("sha") && __builtin_cpu_supports("sse4.1");
+  // CPUID directly: clang 14's __builtin_cpu_supports knows no "sha" (leaf 7 EBX bit 29; SSE4.1: leaf 1 ECX bit 19).
+  static const bool available = [] {
+    unsigned a = 0, b = 0, c = 0, d = 0;
+    const bool sse41 = __get_cpuid(1, &a, &b, &c, &d) != 0 && (c & bit_SSE4_1) != 0;
+    return sse41 && __get_cpuid_count(7, 0, &a, &b, &c, &d) != 0 && (b & bit_SHA) != 0;
+  }();
   return available;
 #else
   return false;
