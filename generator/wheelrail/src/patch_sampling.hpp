@@ -25,7 +25,7 @@ class PatchBuilder {
  public:
   PatchBuilder(const SideGeometry& side, double dy, double roll, double z_first, ContactSurface surface,
                GridAlignment strips)
-      : side_(side), dy_(dy), roll_(roll), cos_roll_(std::cos(roll)), sin_roll_(std::sin(roll)), z_first_(z_first),
+      : side_(side), dy_(dy), cos_roll_(std::cos(roll)), sin_roll_(std::sin(roll)), z_first_(z_first),
         surface_(surface), strips_(strips) {}
   //! z_ws of first contact: the wheel is placed touching the rail.
   void set_first_contact_height(double z_first) { z_first_ = z_first; }
@@ -76,7 +76,7 @@ class PatchBuilder {
   bool intersect_wheel(const NormalLine& line, double dz, SampleState& state, WheelSurfacePoint& w) const;
 
   const SideGeometry& side_;
-  double dy_, roll_, cos_roll_, sin_roll_, z_first_;
+  double dy_, cos_roll_, sin_roll_, z_first_;
   ContactSurface surface_;
   GridAlignment strips_;
 };
