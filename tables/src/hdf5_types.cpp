@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 
 namespace ctab::tables::detail {
 
@@ -21,6 +22,23 @@ hid_t make_case_status_type() noexcept {
     const auto v = static_cast<std::int8_t>(value);
     H5Tenum_insert(type, case_status_name(static_cast<CaseStatus>(v)), &v);
   }
+  return type;
+}
+
+hid_t make_method_type() noexcept {
+  const hid_t type = H5Tenum_create(H5T_STD_I8LE);
+  const std::pair<const char*, std::int8_t> methods[] = {{"not_recorded", kMethodNotRecorded}, {"mim1d", 0},
+                                                         {"hertz", 1}, {"kp", 2}, {"analyn", 3}, {"bem2d", 4}};
+  static_assert(kMaxMethodValue == 4, "a ContactMethod value without its name in the method enum");
+  for (const auto& [name, value] : methods) H5Tenum_insert(type, name, &value);
+  return type;
+}
+
+hid_t make_bool_type() noexcept {
+  const hid_t type = H5Tenum_create(H5T_STD_I8LE);
+  const std::int8_t no = 0, yes = 1;
+  H5Tenum_insert(type, "FALSE", &no);
+  H5Tenum_insert(type, "TRUE", &yes);
   return type;
 }
 
@@ -103,6 +121,12 @@ bool write_integer_attribute(hid_t object, const char* name, std::int64_t value)
 
 bool write_number_attribute(hid_t object, const char* name, double value) noexcept {
   return write_scalar_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
+}
+
+bool write_bool_attribute(hid_t object, const char* name, bool value) noexcept {
+  const Handle type(make_bool_type(), H5Tclose);
+  const std::int8_t v = value ? 1 : 0;
+  return write_scalar_attribute(object, name, type.get(), type.get(), &v);
 }
 
 bool read_text_attribute(hid_t attribute, std::string& value) {

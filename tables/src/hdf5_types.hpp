@@ -11,6 +11,10 @@
 
 namespace ctab::tables::detail {
 
+//! The root attribute written as a boolean (make_bool_type); Table::text_attributes holds it as text, true when it
+//! starts with "true". Tables that wrote it as a sentence ("true: left wheel at dy = ...") read the same.
+inline constexpr const char* kMirroredAttribute = "mirrored";
+
 //! One row of /jumps in memory (the file type is the packed little-endian form: no padding bytes on disk).
 struct JumpRecord {
   std::uint32_t i_second;
@@ -24,6 +28,11 @@ struct JumpRecord {
 
 //! Enum type (int8 base) with the names of CaseStatus (case_status_name) and their values.
 [[nodiscard]] hid_t make_case_status_type() noexcept;
+//! Enum type (int8 base) of /wheels/method: the ContactMethod names and values (mim1d 0, hertz 1, kp 2, analyn 3,
+//! bem2d 4) and not_recorded (kMethodNotRecorded).
+[[nodiscard]] hid_t make_method_type() noexcept;
+//! h5py's boolean: an enum (int8 base) FALSE = 0, TRUE = 1.
+[[nodiscard]] hid_t make_bool_type() noexcept;
 //! Enum type (uint8 base) with the JumpKind names "appears", "disappears", "moves".
 [[nodiscard]] hid_t make_jump_kind_type() noexcept;
 //! Memory compound type of JumpRecord; its kind member has type `kind_type` (a JumpKind enum type).
@@ -39,6 +48,7 @@ struct JumpRecord {
 [[nodiscard]] bool write_text_attribute(hid_t object, const char* name, const std::string& value) noexcept;
 [[nodiscard]] bool write_integer_attribute(hid_t object, const char* name, std::int64_t value) noexcept;
 [[nodiscard]] bool write_number_attribute(hid_t object, const char* name, double value) noexcept;
+[[nodiscard]] bool write_bool_attribute(hid_t object, const char* name, bool value) noexcept;
 
 //! Reads a string attribute (variable or fixed length); false if it is not a string or cannot be read.
 [[nodiscard]] bool read_text_attribute(hid_t attribute, std::string& value);

@@ -48,16 +48,16 @@ constexpr int kAny = 0, kNonNegative = 1, kPositive = 2;
 
 std::vector<Field> schema_fields(Table& t) {
   auto& p = t.patch;
-  Field status{"/wheels/status", "-", "case status per wheel, an enum (names in tables/README.md)", Extent::PerWheel,
+  Field status{"/wheels/status", "1", "case status per wheel, an enum (names in tables/README.md)", Extent::PerWheel,
                Element::Status};
   status.statuses = &t.status;
-  Field present{"/patches/present", "-", "1 where the slot holds a patch, else 0 (every patch value is then 0)",
+  Field present{"/patches/present", "1", "1 where the slot holds a patch, else 0 (every patch value is then 0)",
                 Extent::PerSlot, Element::Presence};
   present.bytes = &p.present;
   present.patch = true;
-  Field method{"/wheels/method", "-",
-               "normal-contact method that solved the case, a ContactMethod value (0 mim1d, 1 hertz, 2 kp, 3 analyn, "
-               "4 bem2d); the least model's choice with method auto",
+  Field method{"/wheels/method", "1",
+               "normal-contact method that solved the case, an enum of the ContactMethod values (0 mim1d, 1 hertz, "
+               "2 kp, 3 analyn, 4 bem2d; -1 not_recorded); the least model's choice with method auto",
                Extent::PerWheel, Element::Int8};
   method.int8s = &t.method;
   method.optional = true;

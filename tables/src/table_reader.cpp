@@ -45,6 +45,13 @@ herr_t collect_attribute(hid_t object, const char* name, const H5A_info_t*, void
       if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) >= 0) out.number[name] = value;
       break;
     }
+    case H5T_ENUM: {  // booleans (h5py's FALSE/TRUE enum) arrive as the text "true" or "false"
+      const Handle boolean(detail::make_bool_type(), H5Tclose);
+      std::int8_t value = 0;
+      if (detail::same_enum(type.get(), boolean.get()) && H5Aread(attribute.get(), type.get(), &value) >= 0)
+        out.text[name] = value != 0 ? "true" : "false";
+      break;
+    }
     default: break;
   }
   return 0;
@@ -156,6 +163,7 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
                                                  " GiB in memory (limit " + std::to_string(kMaxTableBytes / (1u << 30)) +
                                                  " GiB, tables/README.md \"Limits\")");
   const Handle status_type(detail::make_case_status_type(), H5Tclose);
+  const Handle method_type(detail::make_method_type(), H5Tclose);
   for (const detail::Field& f : detail::schema_fields(table)) {
     if (f.optional && H5Lexists(file, f.path, H5P_DEFAULT) <= 0) continue;  // an older table: filled on read
     const std::vector<hsize_t> want =
@@ -167,9 +175,12 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
                   path + ": dataset " + f.path + " has shape " + shape_text(dims) + ", expected " + shape_text(want));
     const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
     const Handle type(H5Dget_type(dataset.get()), H5Tclose);
-    const bool type_ok = f.element == detail::Element::Float64 ? H5Tget_class(type.get()) == H5T_FLOAT
-                         : f.element == detail::Element::Presence || f.element == detail::Element::Int8
-                             ? H5Tget_class(type.get()) == H5T_INTEGER && H5Tget_size(type.get()) == 1
+    // /wheels/method: the method enum, or int8 (tables written before it was an enum).
+    const bool byte = H5Tget_class(type.get()) == H5T_INTEGER && H5Tget_size(type.get()) == 1;
+    const bool type_ok = f.element == detail::Element::Float64  ? H5Tget_class(type.get()) == H5T_FLOAT
+                         : f.element == detail::Element::Presence ? byte
+                         : f.element == detail::Element::Int8
+                             ? byte || detail::same_enum(type.get(), method_type.get())
                              : detail::same_enum(type.get(), status_type.get());
     if (!type_ok)
       return fail(TableStatus::InvalidContent,
@@ -189,12 +200,14 @@ TableResult read_arrays(hid_t file, const std::string& path, Table& table) {
       continue;
     }
     const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
-    // Status: read with the file's own enum type (checked equal to ours), so unknown values arrive unchanged.
+    // Enums (status, method): read with the file's own type (checked equal to ours), so unknown values arrive
+    // unchanged (HDF5 converts no enum to an integer).
     const Handle file_type(H5Dget_type(dataset.get()), H5Tclose);
-    const hid_t memory = f.element == detail::Element::Float64    ? H5T_NATIVE_DOUBLE
-                         : f.element == detail::Element::Presence ? H5T_NATIVE_UINT8
-                         : f.element == detail::Element::Int8     ? H5T_NATIVE_INT8
-                                                                  : file_type.get();
+    const bool enumeration = H5Tget_class(file_type.get()) == H5T_ENUM;
+    const hid_t memory = f.element == detail::Element::Float64                ? H5T_NATIVE_DOUBLE
+                         : f.element == detail::Element::Presence             ? H5T_NATIVE_UINT8
+                         : f.element == detail::Element::Int8 && !enumeration ? H5T_NATIVE_INT8
+                                                                              : file_type.get();
     if (f.size() > 0 && H5Dread(dataset.get(), memory, H5S_ALL, H5S_ALL, H5P_DEFAULT, f.data()) < 0)
       return fail(TableStatus::NotATable, path + ": cannot read " + f.path + " (truncated or damaged)");
     if (f.extent == detail::Extent::SecondAxis) {

@@ -8,6 +8,7 @@
 
 #include "ctab/tables/table.hpp"
 #include "chunk_deflate.hpp"
+#include "dimension_scales.hpp"
 #include "hdf5_types.hpp"
 #include "schema_fields.hpp"
 
@@ -76,6 +77,7 @@ class FilePlan {
   FilePlan(const Table& table, std::int64_t level)
       : table_(const_cast<Table&>(table)),  // schema_fields binds non-const members; nothing is modified
         level_(level), status_type_(detail::make_case_status_type(), H5Tclose),
+        method_type_(detail::make_method_type(), H5Tclose),
         jump_kind_(detail::make_jump_kind_type(), H5Tclose),
         jump_memory_(detail::make_jump_type(jump_kind_.get()), H5Tclose),
         jump_file_(detail::make_jump_file_type(), H5Tclose) {}
@@ -93,13 +95,14 @@ class FilePlan {
           f.description};
       if (element_count(write.shape) != f.size()) return std::string(f.path) + ": size does not match its shape";
       if (f.element == detail::Element::Presence) write.file_type = H5T_STD_U8LE, write.memory_type = H5T_NATIVE_UINT8;
-      if (f.element == detail::Element::Int8) write.file_type = H5T_STD_I8LE, write.memory_type = H5T_NATIVE_INT8;
+      if (f.element == detail::Element::Int8) write.file_type = write.memory_type = method_type_.get();
       if (f.element == detail::Element::Status) write.file_type = write.memory_type = status_type_.get();
       if (f.extent == detail::Extent::SecondAxis) {
         write.units = table_.second_axis_units.c_str();
         write.axis_name = &table_.second_axis_name;
       }
       add(write);
+      dimensioned_.push_back({f.path, f.extent});
     }
     jump_rows_.reserve(table_.jumps.size());
     for (const Jump& j : table_.jumps) {
@@ -112,7 +115,7 @@ class FilePlan {
          jump_file_.get(),
          jump_memory_.get(),
          jump_rows_.data(),
-         "-",
+         "1",
          "contact jumps: a slot appears, disappears or moves between dy_low_m and dy_high_m"});
     compressed_.resize(chunks_.size());
     return "";
@@ -143,6 +146,8 @@ class FilePlan {
     }
     for (const DatasetWrite& write : writes_)
       if (!create_dataset(file, write)) return std::string("cannot write ") + write.path;
+    if (!detail::write_dimension_scales(file, dimensioned_, table_.n_slots, table_.strip_samples))
+      return "cannot write the dimension scales";
     if (!write_root_attributes(file)) return "cannot write the root attributes (a provenance name used twice?)";
     return "";
   }
@@ -208,7 +213,9 @@ class FilePlan {
         detail::write_integer_attribute(root.get(), "n_slots", static_cast<std::int64_t>(table_.n_slots)) &&
         detail::write_text_attribute(root.get(), "second_axis_name", table_.second_axis_name);
     for (const auto& [name, value] : table_.text_attributes)
-      ok = ok && detail::write_text_attribute(root.get(), name.c_str(), value);
+      ok = ok && (name == detail::kMirroredAttribute  // a boolean: true when its text starts with "true"
+                      ? detail::write_bool_attribute(root.get(), name.c_str(), value.rfind("true", 0) == 0)
+                      : detail::write_text_attribute(root.get(), name.c_str(), value));
     for (const auto& [name, value] : table_.number_attributes)
       ok = ok && detail::write_number_attribute(root.get(), name.c_str(), value);
     for (const auto& [name, value] : table_.integer_attributes)
@@ -218,9 +225,10 @@ class FilePlan {
 
   Table& table_;
   std::int64_t level_;
-  Handle status_type_, jump_kind_, jump_memory_, jump_file_;
+  Handle status_type_, method_type_, jump_kind_, jump_memory_, jump_file_;
   std::vector<detail::JumpRecord> jump_rows_;
   std::vector<DatasetWrite> writes_;
+  std::vector<detail::DimensionedDataset> dimensioned_;  // the schema's arrays, for their dimension scales
   std::vector<std::optional<detail::ChunkGrid>> grids_;  // the direct datasets' chunk grids
   std::vector<Chunk> chunks_;
   std::vector<std::vector<unsigned char>> compressed_;
