@@ -36,7 +36,10 @@ const std::vector<std::string> kColumns = {"scene",
                                            "vs_contact_area_error_rel",
                                            "vs_contact_max_pressure_error_rel",
                                            "vs_contact_point_error_m",
-                                           "tolerance"};
+                                           "tolerance",
+                                           "time_min_s",
+                                           "time_median_s",
+                                           "time_max_s"};
 
 std::string field(const CsvTable& t, const std::vector<std::string>& row, const std::string& name) {
   const std::size_t c = t.column(name);
@@ -71,7 +74,8 @@ void expect_every_method(const CsvTable* table_) {
 void expect_finite(const CsvTable* table_) {
   for (const auto& row : table_->rows)
     for (const std::string name : {"time_per_case_s", "area_error_rel", "max_pressure_error_rel",
-                                   "p0_profile_rms_error_rel", "contact_point_error_m", "error_rel"}) {
+                                   "p0_profile_rms_error_rel", "contact_point_error_m", "error_rel", "time_min_s",
+                                   "time_median_s", "time_max_s"}) {
       const std::string text = field(*table_, row, name);
       EXPECT_FALSE(text.empty()) << name << " of " << field(*table_, row, "scene") << " "
                                  << field(*table_, row, "method");
@@ -79,6 +83,19 @@ void expect_finite(const CsvTable* table_) {
       EXPECT_TRUE(std::isfinite(std::stod(text))) << name << " = " << text;
       EXPECT_GE(std::stod(text), 0.0) << name;
     }
+}
+
+// The timing spread over single solves brackets the mean of the cases' best times.
+void expect_spread(const CsvTable* table_) {
+  for (const auto& row : table_->rows) {
+    const double low = std::stod(field(*table_, row, "time_min_s")), mid = std::stod(field(*table_, row, "time_median_s")),
+                 high = std::stod(field(*table_, row, "time_max_s")),
+                 per_case = std::stod(field(*table_, row, "time_per_case_s"));
+    EXPECT_LE(low, mid);
+    EXPECT_LE(mid, high);
+    EXPECT_LE(low, per_case * (1 + 1e-9));
+    EXPECT_LE(per_case, high * (1 + 1e-9));
+  }
 }
 
 double error_of(const CsvTable& t, const std::string& scene, const std::string& method, double width_m) {
@@ -148,6 +165,7 @@ TEST(AccuracyBench, QuickRun) {
   expect_columns(&run, &table);
   expect_every_method(&table);
   expect_finite(&table);
+  expect_spread(&table);
   expect_mim1d_beats_hertz(&table);
   expect_chart(&dir);
   expect_contact_columns(&table);

@@ -44,13 +44,16 @@ struct AccuracyRow {
   double width_m = 0.0;    //!< strip width / element size [m]; NaN for the least model (it chooses per case)
   double tolerance = 0.0;  //!< the least model's tolerance [-]; 0 for a fixed rung
   int cases = 0, failed = 0, contact_cases = 0;
-  double time_sum_s = 0.0;
+  double time_sum_s = 0.0;          //!< the cases' times (each the minimum over its repeats) [s]
+  std::vector<double> solve_times_s;  //!< every repeat of every case, for the timing spread [s]
   AccuracyErrors worst;
   //! Worst relative area and max-pressure errors and worst centre-of-pressure error [m] against CONTACT.
   double contact_area = 0.0, contact_pressure = 0.0, contact_point = std::numeric_limits<double>::quiet_NaN();
 
-  //! Adds one case: its summary against the reference's, whether it succeeded, its time [s], CONTACT's figures.
-  void add(const ContactSummary& candidate, const ContactSummary& reference_summary, bool ok, double time_s,
+  //! Adds one case: its summary against the reference's, whether it succeeded, the times of its repeats [s] (at
+  //! least one), CONTACT's figures.
+  void add(const ContactSummary& candidate, const ContactSummary& reference_summary, bool ok,
+           const std::vector<double>& times_s,
            const std::optional<ContactFigures>& contact);
 };
 
