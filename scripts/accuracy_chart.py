@@ -171,8 +171,8 @@ def main(csv_path, prefix):
              for ax, key in zip(axes.flat, panels)]
     for ax in list(axes.flat)[len(panels):]:
         ax.axis("off")
-    fig.suptitle("ctab bench accuracy: worst relative error against time per case "
-                 "(labels: strip width / element size in mm; auto: the least model's tolerance)")
+    fig.suptitle("ctab bench accuracy: worst relative error against time per case\n"
+                 "labels: strip width / element size in mm; auto: the least model's tolerance", fontsize=11)
     fig.legend(handles=legend_handles(methods), loc="lower center", ncol=len(methods) + 2, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.04, 1, 1))
     fig.canvas.draw()  # the final layout: labels are placed in display coordinates
