@@ -147,11 +147,12 @@ def draw_panel(ax, sub):
     return points
 
 
-def legend_handles(methods):
+def legend_handles(methods, spread):
     handles = [Line2D([], [], ls="", marker=MARKERS.get(m, "x"), color=COLOURS.get(m, "k"), label=m) for m in methods]
     handles.append(Line2D([], [], color="k", ls="--", lw=1, label="Pareto front"))
-    handles.append(Line2D([], [], color="0.4", lw=1, marker="|", ms=8,
-                          label="single solves: fastest – median (tall tick) – slowest"))
+    if spread:
+        handles.append(Line2D([], [], color="0.4", lw=1, marker="|", ms=8,
+                              label="single solves: fastest – median (tall tick) – slowest"))
     return handles
 
 
@@ -173,7 +174,8 @@ def main(csv_path, prefix):
         ax.axis("off")
     fig.suptitle("ctab bench accuracy: worst relative error against time per case\n"
                  "labels: strip width / element size in mm; auto: the least model's tolerance", fontsize=11)
-    fig.legend(handles=legend_handles(methods), loc="lower center", ncol=len(methods) + 2, fontsize=8, frameon=False)
+    spread = any(number(r, "time_max_s") is not None for r in rows)  # CSVs of older runs have no spread columns
+    fig.legend(handles=legend_handles(methods, spread), loc="lower center", ncol=len(methods) + 2, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.04, 1, 1))
     fig.canvas.draw()  # the final layout: labels are placed in display coordinates
     for ax, points in drawn:
