@@ -61,7 +61,7 @@ void add_provenance(tables::Table& table, const TableConfig& config, const Sweep
   text["surface"] = std::string(surface_name(config.surface));
   text["reference_point"] = std::string(reference_point_name(config.reference));
   text["reference_angle"] = std::string(reference_angle_name(config.reference));
-  text["mirrored"] = plan.mirrored ? "true: left wheel at dy = right wheel at -dy (mirror-image sides)" : "false";
+  text["mirrored"] = plan.mirrored ? "true" : "false";  // a boolean in the file (tables/README.md)
   text["units"] = "SI: m, N, Pa, rad";
   auto& number = table.number_attributes;
   number["youngs_modulus_Pa"] = config.material.youngs_modulus_Pa;
