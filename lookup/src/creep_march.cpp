@@ -1,7 +1,8 @@
 // The FASTSIM march (Kalker 1982, "A fast algorithm for the simplified theory of rolling contact", VSD 11:1-13):
 // traction p = -(displacement difference) / L grows from zero at the leading edge x = +a with the rigid slip
 // (xi - phi s, eta + phi x) and is cut back to the bound mu q0 (1 - x^2/a^2) where it would exceed it (slip).
-// Cells: `cells` per strip, evenly spread over [-a, a], evaluated at their centres.
+// Cells: `cells` per strip, evenly spread over [-a, a], evaluated at their centres (the first step, from the
+// leading edge, is half a cell, so that the small-creepage traction is exact at every centre).
 #include "creep_march.hpp"
 
 #include <algorithm>
@@ -49,10 +50,12 @@ CTAB_CREEP_CLONES void march_cells(const MarchStrips& strips, const Flexibility&
   for (std::int32_t k = 0; k < cells; ++k) {
     const double u = 1.0 - (2.0 * k + 1.0) * inv_cells;  // x / a at the cell centre
     const double bound = 1.0 - u * u;
+    // The step from the previous centre (from the leading edge for the first cell) and x / a at its middle.
+    const double step = k == 0 ? 0.5 : 1.0, u_step = k == 0 ? 1.0 - 0.5 * inv_cells : 1.0 - 2.0 * k * inv_cells;
     for (std::uint32_t i = 0; i < n; ++i) {
       const double x = strips.a[i] * u;
-      double px = st.px[i] + st.dpx[i];
-      double py = st.py[i] - st.dx[i] * (eta_l2 + phi_l3 * x);
+      double px = st.px[i] + step * st.dpx[i];
+      double py = st.py[i] - step * st.dx[i] * (eta_l2 + phi_l3 * strips.a[i] * u_step);
       const double g = st.g0[i] * bound, t2 = px * px + py * py;
       const bool slips = t2 > g * g;
       const double scale = slips ? g / std::sqrt(std::max(t2, 1e-300)) : 1.0;
