@@ -57,8 +57,8 @@ CTAB_CREEP_CLONES void march_cells(const MarchStrips& strips, const Flexibility&
       double px = st.px[i] + step * st.dpx[i];
       double py = st.py[i] - step * st.dx[i] * (eta_l2 + phi_l3 * strips.a[i] * u_step);
       const double g = st.g0[i] * bound, t2 = px * px + py * py;
-      const bool slips = t2 > g * g;
-      const double scale = slips ? g / std::sqrt(std::max(t2, 1e-300)) : 1.0;
+      // Branch-free (the loop vectorises): scale < 1 exactly where the traction exceeds its bound (slip).
+      const double scale = std::min(1.0, g / std::sqrt(std::max(t2, 1e-300)));
       px *= scale;
       py *= scale;
       st.px[i] = px;
@@ -66,7 +66,7 @@ CTAB_CREEP_CLONES void march_cells(const MarchStrips& strips, const Flexibility&
       st.fx[i] += px * st.dx[i];
       st.fy[i] += py * st.dx[i];
       st.mz[i] += (x * py - strips.s[i] * px) * st.dx[i];
-      st.slip[i] += slips ? st.dx[i] : 0.0;
+      st.slip[i] += scale < 1.0 ? st.dx[i] : 0.0;
     }
   }
 }
