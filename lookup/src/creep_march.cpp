@@ -74,10 +74,15 @@ CTAB_CREEP_CLONES void march_cells(const MarchStrips& strips, const Flexibility&
 }  // namespace
 
 void march(const MarchStrips& strips, const Flexibility& flex, const ctab_creep_input& input, std::int32_t cells,
-           ctab_creep_patch& out) noexcept {
+           ctab_creep_patch& out, StripForces* field) noexcept {
   MarchState st;
   march_cells(strips, flex, input, cells, st);
   double fx = 0.0, fy = 0.0, mz = 0.0, slip = 0.0, length = 0.0;
+  for (std::uint32_t i = 0; field != nullptr && i < strips.n; ++i) {
+    field->fx_per_m[i] = st.fx[i];
+    field->fs_per_m[i] = st.fy[i];
+    field->slip_fraction[i] = strips.a[i] > 0.0 ? st.slip[i] / (2.0 * strips.a[i]) : 0.0;
+  }
   for (std::uint32_t i = 0; i < strips.n; ++i) {
     fx += st.fx[i];
     fy += st.fy[i];

@@ -25,8 +25,9 @@ struct Flexibility {
 [[nodiscard]] Flexibility flexibility(double a_m, double b_m, double shear_modulus_Pa,
                                       const KalkerCoefficients& c) noexcept;
 
-//! Forces, moment about s = 0 and slip fraction of the march (fx, fs, mz, slip_fraction of `out`).
+//! Forces, moment about s = 0 and slip fraction of the march (fx, fs, mz, slip_fraction of `out`); with `field`,
+//! each strip's forces per unit width and slip fraction.
 void march(const MarchStrips& strips, const Flexibility& flex, const ctab_creep_input& input, std::int32_t cells,
-           ctab_creep_patch& out) noexcept;
+           ctab_creep_patch& out, StripForces* field) noexcept;
 
 }  // namespace ctab::lookup::detail

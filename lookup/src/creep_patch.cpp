@@ -106,7 +106,8 @@ bool valid_creep_input(const ctab_creep_input& in) noexcept {
   return creepages && friction && material && method && cells;
 }
 
-ctab_status creep_patch(const StripPatch& p, const ctab_creep_input& in, ctab_creep_patch& out) noexcept {
+ctab_status creep_patch(const StripPatch& p, const ctab_creep_input& in, ctab_creep_patch& out,
+                        StripForces* field) noexcept {
   std::memset(&out, 0, sizeof out);
   PatchShape shape;
   if (!valid_creep_input(in) || !finite_strips(p) || !shape_of(p, in, shape)) {
@@ -122,7 +123,7 @@ ctab_status creep_patch(const StripPatch& p, const ctab_creep_input& in, ctab_cr
     MarchStrips strips;
     if (in.method == CTAB_CREEP_STRIPS) own_strips(p, shape, strips);
     else ellipse_strips(shape, static_cast<std::uint32_t>(cells), strips);
-    detail::march(strips, flex, in, cells, out);
+    detail::march(strips, flex, in, cells, out, in.method == CTAB_CREEP_STRIPS ? field : nullptr);
   }
   out.force_lateral_N = out.fs_N * std::cos(p.plane_angle_rad);
   out.force_vertical_N = out.fs_N * std::sin(p.plane_angle_rad);

@@ -37,8 +37,17 @@ struct StripPatch {
 //! True when the creepages, friction, material, method and cell count of `input` are usable.
 [[nodiscard]] bool valid_creep_input(const ctab_creep_input& input) noexcept;
 
-//! Creep forces of one patch. Invalid input: CTAB_INVALID_INPUT and `out` zeroed (present 0).
-ctab_status creep_patch(const StripPatch& patch, const ctab_creep_input& input, ctab_creep_patch& out) noexcept;
+//! Per strip of a patch (the strip method): forces per unit width [N/m] and slip fraction, at the patch's samples.
+struct StripForces {
+  double fx_per_m[kMaxCreepStrips];
+  double fs_per_m[kMaxCreepStrips];
+  double slip_fraction[kMaxCreepStrips];
+};
+
+//! Creep forces of one patch. Invalid input: CTAB_INVALID_INPUT and `out` zeroed (present 0). With `field` and the
+//! strip method, each strip's forces too (other methods leave it untouched).
+ctab_status creep_patch(const StripPatch& patch, const ctab_creep_input& input, ctab_creep_patch& out,
+                        StripForces* field = nullptr) noexcept;
 
 //! Creep forces of every slot of one wheel at a prelooked point of `table`.
 ctab_status creep_query(const Table& table, const ctab_location& where, std::int32_t wheel,
