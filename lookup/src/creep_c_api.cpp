@@ -23,6 +23,15 @@ ctab_status ctab_creep_prelooked(const ctab_table* table, const ctab_location* w
   return ctab::lookup::creep_query(table->table, *where, wheel, *input, *out);
 }
 
+ctab_status ctab_creep_slot_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel, int32_t slot,
+                                      const ctab_creep_input* input, ctab_creep_patch* out) {
+  if (out == nullptr) return CTAB_INVALID_INPUT;
+  std::memset(out, 0, sizeof *out);
+  out->status = table == nullptr ? CTAB_NOT_LOADED : CTAB_INVALID_INPUT;
+  if (table == nullptr || where == nullptr || input == nullptr) return static_cast<ctab_status>(out->status);
+  return ctab::lookup::creep_slot(table->table, *where, wheel, slot, *input, *out);
+}
+
 ctab_status ctab_creep_strips(const double* s_m, const double* half_length_m, const double* peak_pressure_Pa,
                               uint32_t n, double normal_force_N, double plane_angle_rad, const ctab_creep_input* input,
                               ctab_creep_patch* out) {

@@ -152,6 +152,14 @@ TEST(CreepTable, SlotsAndTotals) {
     fx += p.fx_N;
     lateral += p.force_lateral_N;
   }
+  for (int s = 0; s < result.n_slots; ++s) {  // the slot call gives the wheel call's patch
+    ctab_creep_patch one;
+    EXPECT_EQ(ctab_creep_slot_prelooked(table, &where, 0, s, &in, &one), CTAB_OK) << "slot " << s;
+    EXPECT_EQ(std::memcmp(&one, &result.patch[s], sizeof one), 0) << "slot " << s;
+  }
+  ctab_creep_patch bad;
+  EXPECT_EQ(ctab_creep_slot_prelooked(table, &where, 0, result.n_slots, &in, &bad), CTAB_INVALID_INPUT);
+  EXPECT_EQ(bad.fx_N, 0.0);
   EXPECT_GT(present, 0);
   EXPECT_NEAR(result.fx_N, fx, 1e-9 * std::abs(fx));
   EXPECT_NEAR(result.force_lateral_N, lateral, 1e-9 * std::abs(lateral) + 1e-12);

@@ -53,4 +53,8 @@ ctab_status creep_patch(const StripPatch& patch, const ctab_creep_input& input, 
 ctab_status creep_query(const Table& table, const ctab_location& where, std::int32_t wheel,
                         const ctab_creep_input& input, ctab_creep_result& out) noexcept;
 
+//! Creep forces of one slot with its own creepages (tread and flange of one wheel roll differently).
+ctab_status creep_slot(const Table& table, const ctab_location& where, std::int32_t wheel, std::int32_t slot,
+                       const ctab_creep_input& input, ctab_creep_patch& out) noexcept;
+
 }  // namespace ctab::lookup

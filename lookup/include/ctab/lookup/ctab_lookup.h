@@ -202,6 +202,11 @@ typedef struct ctab_creep_result {
 CTAB_API ctab_status ctab_creep_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
                                           const ctab_creep_input* input, ctab_creep_result* out);
 
+/* One slot's creep forces with that patch's own creepages (a wheel's tread and flange patches roll at different
+ * radii and contact angles). An absent slot: present 0, zeros, the query's status. */
+CTAB_API ctab_status ctab_creep_slot_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
+                                               int32_t slot, const ctab_creep_input* input, ctab_creep_patch* out);
+
 /* The same solver on one patch given by its strips (s evenly spaced, n in 2..256): s [m], half-length a(s) [m],
  * peak pressure p0(s) [Pa] of the semi-elliptic pressure along x; normal_force_N > 0 rescales the pressure to
  * that force, 0 keeps it; plane_angle_rad for the side-frame parts. */
