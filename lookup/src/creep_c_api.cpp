@@ -23,6 +23,20 @@ ctab_status ctab_creep_prelooked(const ctab_table* table, const ctab_location* w
   return ctab::lookup::creep_query(table->table, *where, wheel, *input, *out);
 }
 
+ctab_status ctab_creep_batch(const ctab_table* table, size_t n, const double* dy_m, const double* second,
+                             const int32_t* wheel, const ctab_creep_input* inputs, ctab_creep_result* out) {
+  if (n > 0 && (dy_m == nullptr || second == nullptr || wheel == nullptr || inputs == nullptr || out == nullptr))
+    return CTAB_INVALID_INPUT;
+  ctab_status worst = CTAB_OK;
+  for (size_t i = 0; i < n; ++i) {
+    ctab_location where;
+    ctab_prelookup(table, dy_m[i], second[i], &where);
+    const ctab_status status = ctab_creep_prelooked(table, &where, wheel[i], &inputs[i], &out[i]);
+    if (status < worst || (worst == CTAB_OK && status != CTAB_OK)) worst = status;
+  }
+  return worst;
+}
+
 ctab_status ctab_creep_slot_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel, int32_t slot,
                                       const ctab_creep_input* input, ctab_creep_patch* out) {
   if (out == nullptr) return CTAB_INVALID_INPUT;

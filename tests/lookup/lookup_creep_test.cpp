@@ -160,6 +160,18 @@ TEST(CreepTable, SlotsAndTotals) {
   ctab_creep_patch bad;
   EXPECT_EQ(ctab_creep_slot_prelooked(table, &where, 0, result.n_slots, &in, &bad), CTAB_INVALID_INPUT);
   EXPECT_EQ(bad.fx_N, 0.0);
+  // The batch equals the single calls.
+  const double dys[2] = {2e-3, -1e-3}, seconds[2] = {80e3, 80e3};
+  const int32_t wheels[2] = {0, 1};
+  const ctab_creep_input inputs[2] = {in, input(-0.002, 0.001, -0.5, CTAB_CREEP_FASTSIM_ELLIPSE)};
+  ctab_creep_result batch[2], single;
+  EXPECT_EQ(ctab_creep_batch(table, 2, dys, seconds, wheels, inputs, batch), CTAB_OK);
+  for (int i = 0; i < 2; ++i) {
+    ctab_location at;
+    ctab_prelookup(table, dys[i], seconds[i], &at);
+    ctab_creep_prelooked(table, &at, wheels[i], &inputs[i], &single);
+    EXPECT_EQ(std::memcmp(&single, &batch[i], sizeof single), 0) << "batch entry " << i;
+  }
   EXPECT_GT(present, 0);
   EXPECT_NEAR(result.fx_N, fx, 1e-9 * std::abs(fx));
   EXPECT_NEAR(result.force_lateral_N, lateral, 1e-9 * std::abs(lateral) + 1e-12);

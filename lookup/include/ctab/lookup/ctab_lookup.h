@@ -202,6 +202,12 @@ typedef struct ctab_creep_result {
 CTAB_API ctab_status ctab_creep_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
                                           const ctab_creep_input* input, ctab_creep_result* out);
 
+/* A batch for scripting (the Python wrapper): for i < n, prelookup (dy_m[i], second[i]) and the creep forces of
+ * wheel[i] with inputs[i] into out[i]. Returns the most severe status (a failure, else CTAB_CLAMPED, else
+ * CTAB_OK); each out[i] has its own. */
+CTAB_API ctab_status ctab_creep_batch(const ctab_table* table, size_t n, const double* dy_m, const double* second,
+                                      const int32_t* wheel, const ctab_creep_input* inputs, ctab_creep_result* out);
+
 /* One slot's creep forces with that patch's own creepages (a wheel's tread and flange patches roll at different
  * radii and contact angles). An absent slot: present 0, zeros, the query's status. */
 CTAB_API ctab_status ctab_creep_slot_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
