@@ -198,8 +198,7 @@ typedef struct ctab_creep_result {
 
 /* Creep forces of every slot of one wheel at a prelooked point. NaN/infinite creepages, friction <= 0 or not
  * finite, a bad material, method or cell count, or a table without strip profiles or with more than 256 strip
- * samples: CTAB_INVALID_INPUT
- * with every output zeroed. */
+ * samples: CTAB_INVALID_INPUT with every output zeroed. */
 CTAB_API ctab_status ctab_creep_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
                                           const ctab_creep_input* input, ctab_creep_result* out);
 
