@@ -85,7 +85,9 @@ TEST(CreepHertz, LargeCreepageSaturatesAtMuN) {
       EXPECT_NEAR(std::hypot(out.fx_N, out.fs_N) / (0.3 * force), 1.0, 0.005)
           << "method " << method << " xi " << xi << " eta " << eta << " phi " << phi;
       EXPECT_GT(out.slip_fraction, 0.95) << "method " << method;
-      if (xi > 0.0) EXPECT_LT(out.fx_N, 0.0) << "a driving wheel (xi > 0) pushes the rail back (CONTACT's sign)";
+      if (xi > 0.0) {
+        EXPECT_LT(out.fx_N, 0.0) << "a driving wheel (xi > 0) pushes the rail back (CONTACT's sign)";
+      }
     }
 }
 
