@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "creep_accuracy.hpp"
 #include "ctab/validation/accuracy_bench.hpp"
 #include "exit_codes.hpp"
 #include "setup_options.hpp"
@@ -85,7 +86,10 @@ Command add_bench_accuracy_subcommand(CLI::App& bench) {
       "CONTACT reference directory (wheelrail/summary.csv, wheelrail/flange/planar_normal_force.csv); its "
       "wheel-rail cases are compared when the profiles are CONTACT's (the Manchester files, inclination 0)");
   (void)add_setup_options(*app, *profiles, kProfiles);
-  return {app, [out, quick, reference, profiles] {
+  auto creep = std::make_shared<std::string>();
+  app->add_option("--creep", *creep, "CONTACT's creep references (wheelrail/tangential): the tangential ladder instead");
+  return {app, [out, quick, reference, profiles, creep] {
+            if (!creep->empty()) return run_creep_accuracy(*out, *creep);
             finish_setup_options(*profiles);
             gen::AccuracyBenchOptions options;
             options.quick = *quick;

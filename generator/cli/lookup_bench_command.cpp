@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "creep_bench.hpp"
 #include "ctab/core/error.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
 #include "isolated_read.hpp"
@@ -172,6 +173,7 @@ int bench_table(const std::string& path, std::size_t queries, int repetitions, I
   }
   std::printf("(clock overhead %.1f ns subtracted from single-query times; checksum %g)\n", overhead, sink);
   compare_single(tables[0], tables[1], random_points(tables[0], std::min<std::size_t>(queries, 200000), 99));
+  bench_creep(tables[0], std::min<std::size_t>(queries, 100000), overhead);
   return 0;
 }
 

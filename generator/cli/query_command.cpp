@@ -1,4 +1,5 @@
-// `ctab query FILE --dy METRES [--load N | --approach M] [--wheel left|right] [--pchip] [--strips] [--json]`:
+// `ctab query FILE --dy METRES [--load N | --approach M] [--wheel left|right] [--pchip] [--strips] [--json]
+// [--creepage XI,ETA,PHI --friction MU]`:
 // one lookup, as a HIL target would make it, printed as text or JSON.
 #include <cmath>
 #include <cstdio>
@@ -11,10 +12,12 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "creep_output.hpp"
 #include "ctab/core/error.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
 #include "isolated_read.hpp"
 #include "load_errors.hpp"
+#include "setup_options.hpp"
 
 namespace ctab::cli {
 
@@ -25,6 +28,8 @@ struct QueryOptions {
   double dy_m = 0.0;
   std::optional<double> load_N, approach_m;
   bool json = false, pchip = false, strips = false;
+  CreepOptions creep;
+  gen::ElasticMaterial material;  //!< for the creep forces (the table's material)
 };
 
 constexpr const char* kQuantityNames[CTAB_QUANTITIES] = {"normal_force_N",    "force_lateral_N",  "force_vertical_N",
@@ -85,6 +90,13 @@ int query_table(const QueryOptions& o, IsolatedChild& child) {
     }
     patches.push_back(patch);
   }
+  if (o.creep.wanted()) {
+    ctab_creep_result forces;
+    (void)lookup::creep_query(table, where, wheel, o.creep.input(o.material), forces);
+    for (auto& patch : patches) patch["creep"] = creep_json(forces.patch[patch["slot"].get<int>()]);
+    out["creep_total"] = {{"fx_N", forces.fx_N}, {"force_lateral_N", forces.force_lateral_N},
+                          {"force_vertical_N", forces.force_vertical_N}, {"mz_Nm", forces.mz_Nm}};
+  }
   out["patches"] = patches;
   if (o.json) {
     std::cout << out.dump(2) << '\n';
@@ -96,6 +108,7 @@ int query_table(const QueryOptions& o, IsolatedChild& child) {
   for (const auto& patch : patches) {
     std::printf("slot %d:\n", patch["slot"].get<int>());
     for (const char* name : kQuantityNames) std::printf("  %-20s %.9g\n", name, patch[name].get<double>());
+    if (patch.contains("creep")) print_creep("  ", patch["creep"]);
   }
   if (patches.empty()) std::printf("no contact\n");
   return 0;
@@ -103,6 +116,7 @@ int query_table(const QueryOptions& o, IsolatedChild& child) {
 
 // In a child process (isolated_read.hpp): the file may be an HDF5 table from anywhere.
 int run_query(const QueryOptions& o) {
+  check_creep_options(o.creep);
   return run_isolated([&](IsolatedChild& child) { return query_table(o, child); }).exit_code;
 }
 
@@ -120,6 +134,12 @@ Command add_query_command(CLI::App& parent) {
   app->add_flag("--pchip", o->pchip, "monotone cubic along dy instead of linear");
   app->add_flag("--strips", o->strips, "include the strip profiles (JSON)");
   app->add_flag("--json", o->json, "print JSON");
+  add_creep_options(*app, o->creep);
+  app->add_option("--youngs-modulus", o->material.youngs_modulus_Pa,
+                  "Young's modulus of both bodies for --creepage [Pa] (default: steel, the generator's default)")
+      ->check(finite_positive("Pa"));
+  app->add_option("--poisson-ratio", o->material.poisson_ratio, "Poisson's ratio for --creepage (default 0.3)")
+      ->check(CLI::Range(0.0, 0.499));
   return {app, [o] { return run_query(*o); }};
 }
 

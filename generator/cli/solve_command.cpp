@@ -9,6 +9,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "creep_output.hpp"
 #include "ctab/core/error.hpp"
 #include "ctab/contact/normal_contact.hpp"
 #include "ctab/contact/strip_grid.hpp"
@@ -30,6 +31,7 @@ struct SolveOptions {
   std::string curvature = "smoothed", update = "newton", side;
   bool json = false;
   bool wheelrail_given = false;
+  CreepOptions creep;
 };
 
 std::string millimetres(double metres) {
@@ -98,6 +100,31 @@ gen::TableConfig wheelrail_config(const SolveOptions& o, double& load_value) {
   return config;
 }
 
+// The creep forces of every solved patch, into each patch's JSON ("creep"), from its own strips.
+void add_creep(nlohmann::json& json, const ctab_creep_input& input) {
+  for (const char* wheel : {"right", "left"})
+    if (json.contains(wheel))
+      for (auto& patch : json[wheel]["patches"]) {
+        gen::ContactPatch p;
+        p.normal_force_N = patch["normal_force_N"].get<double>();
+        p.plane_angle_rad = patch["plane_angle_rad"].get<double>();
+        for (const auto& strip : patch["strips"])
+          p.strips.push_back({strip["s_m"].get<double>(), strip["y_rail_m"].get<double>(),
+                              strip["half_length_m"].get<double>(), strip["p0_Pa"].get<double>()});
+        patch["creep"] = solved_patch_creep(p, input);
+      }
+}
+
+void print_creep_lines(const nlohmann::json& json) {
+  for (const char* wheel : {"right", "left"})
+    if (json.contains(wheel))
+      for (const auto& patch : json[wheel]["patches"])
+        if (patch.contains("creep")) {
+          std::printf("  %s %s patch ", wheel, patch["zone"].get<std::string>().c_str());
+          print_creep("", patch["creep"]);
+        }
+}
+
 int solve_wheelrail(const SolveOptions& o) {
   if (!o.dy_m) throw gen::InputError("--dy", 0, "wheel-rail cases need the lateral shift --dy METRES");
   double load_value = 0.0;
@@ -113,16 +140,22 @@ int solve_wheelrail(const SolveOptions& o) {
       throw gen::InputError("--dy", 0,
                             std::string("the ") + (wheel == 0 ? "right" : "left") + " wheel is off its rail at dy = " +
                                 millimetres(*o.dy_m) + " (no wheel point above the rail profile)");
+  nlohmann::json json = to_json(config, solution);
+  if (o.creep.wanted()) add_creep(json, o.creep.input(config.material));
   if (o.json) {
-    nlohmann::json json = to_json(config, solution);
     add_smoothing(json, setup);
     std::cout << json.dump(1) << '\n';
-  } else print_summary(config, solution);
+  } else {
+    print_summary(config, solution);
+    print_creep_lines(json);
+  }
   return report_failures(config, setup, solution) ? kExitCaseFailed : kExitSuccess;
 }
 
 int run_solve(const SolveOptions& o) {
+  check_creep_options(o.creep);
   if (!o.gap_path.empty()) {
+    if (o.creep.wanted()) throw gen::InputError("--creepage", 0, "creep forces need a wheel-rail case (--dy), not --gap");
     if (o.wheelrail_given)
       throw gen::InputError("solve", 0, "give either --gap FILE or a wheel-rail case (--dy), not both");
     return solve_gap(o);
@@ -167,6 +200,7 @@ Command add_solve_command(CLI::App& parent) {
   for (CLI::Option* other : {gap, approach, normal, vertical}) setup.push_back(other);
   for (const char* alias : {"--E", "--nu"}) setup.push_back(app->get_option(alias));
   app->add_flag("--json", o->json, "print one JSON object");
+  add_creep_options(*app, o->creep);
   // --config excludes the set-up options (checked here rather than with CLI11's excludes, which clutters --help).
   app->callback([app, o, config, setup] {
     for (const CLI::Option* other : setup)

@@ -82,6 +82,7 @@ TEST(LookupRealtime, CountingAllocatorSeesLoadsButNoQueries) {
   for (double& dy : dys) dy = uniform(random);
   ctab_result result;
   ctab_location where;
+  ctab_creep_result creep_result;
   double s[16], a[16], p0[16];
   std::uint32_t count = 0;
   const long before = g_allocations.load();
@@ -90,10 +91,16 @@ TEST(LookupRealtime, CountingAllocatorSeesLoadsButNoQueries) {
     ctab_prelookup(table, dy, 1e9, &where);
     ctab_query_prelooked(table, &where, 1, &result);
     ctab_strip_profile(table, &where, 1, 0, s, a, p0, 16, &count);
+    for (const int32_t method : {CTAB_CREEP_STRIPS, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_LINEAR}) {
+      const ctab_creep_input creep{dy * 0.1, -dy * 0.1, 0.5, 0.3, 0.0, 0.0, method, 0};
+      ctab_creep_prelooked(table, &where, 1, &creep, &creep_result);
+    }
   }
+  const ctab_creep_input bad{std::nan(""), 0.0, 0.0, 0.3, 0.0, 0.0, CTAB_CREEP_STRIPS, 0};
+  ctab_creep_prelooked(table, &where, 0, &bad, &creep_result);
   ctab_query(table, std::nan(""), 0.0, 0, &result);
   ctab_query(nullptr, 0.0, 0.0, 0, &result);
-  EXPECT_EQ(g_allocations.load(), before) << "a query allocated";
+  EXPECT_EQ(g_allocations.load(), before) << "a query or a creep call allocated";
   ctab_table_close(table);
 }
 

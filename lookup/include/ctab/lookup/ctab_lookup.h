@@ -149,6 +149,82 @@ CTAB_API ctab_status ctab_strip_profile(const ctab_table* table, const ctab_loca
 /* A static English sentence for any status value (never NULL). */
 CTAB_API const char* ctab_status_message(int32_t status);
 
+/* ---- Creep forces (tangential contact) on the tabulated strips: docs/creep.md ----
+ * Steady rolling, Coulomb friction, quasi-identical materials (the normal solution does not depend on the
+ * tangential one). Same rules as the queries: no allocation, lock, system call or exception; time bounded by the
+ * table's strip samples and the cells per strip. Frames: per patch the contact plane (x rolling direction, s as
+ * the table's s, in the plane inclined by CTAB_PLANE_ANGLE_RAD, + towards the field side) and the wheel's side
+ * frame (y lateral + to the field side, z vertical + down). Forces are those of the wheel on the rail. Creepages
+ * are CONTACT's: (rail velocity - wheel velocity) / V at the patch's s origin; positive xi (a driving wheel) gives
+ * a force on the rail < 0; spin phi [1/m] about the contact normal. */
+typedef enum ctab_creep_method {
+  CTAB_CREEP_STRIPS = 0,           /* FASTSIM on the patch's own strips, parabolic bound per strip (default) */
+  CTAB_CREEP_FASTSIM_ELLIPSE = 1,  /* FASTSIM on the equivalent ellipse (Kalker 1982) */
+  CTAB_CREEP_LINEAR = 2            /* Kalker's linear theory on the equivalent ellipse (no saturation) */
+} ctab_creep_method;
+
+typedef struct ctab_creep_input {
+  double xi;                /* longitudinal creepage [-] */
+  double eta;               /* lateral creepage, along s [-] */
+  double phi_per_m;         /* spin creepage [1/m] */
+  double friction;          /* Coulomb friction coefficient mu > 0 */
+  double youngs_modulus_Pa; /* both bodies; 0: 208e9 (the generator's default; use the table's attribute) */
+  double poisson_ratio;     /* both bodies, in [0, 0.5); used only when youngs_modulus_Pa > 0, else 0.3 */
+  int32_t method;           /* ctab_creep_method */
+  int32_t cells;            /* cells per strip along x; 0: 16 (range 4..64) */
+} ctab_creep_input;
+
+typedef struct ctab_creep_patch {
+  double fx_N;                /* longitudinal force on the rail [N] */
+  double fs_N;                /* lateral force on the rail in the contact plane (along s) [N] */
+  double mz_Nm;               /* spin moment about the s origin, sum of (x py - s px) dA [N m] */
+  double force_lateral_N;     /* tangential force's lateral part in the side frame: fs cos(plane angle) [N] */
+  double force_vertical_N;    /* its vertical part (+ down): fs sin(plane angle) [N] */
+  double normal_force_N;      /* the normal force the solution used [N] */
+  double slip_fraction;       /* share of the contact area in slip [0, 1] */
+  int32_t present;            /* 1: a patch at this slot */
+  int32_t status;             /* CTAB_OK, CTAB_CLAMPED, or < 0 */
+} ctab_creep_patch;
+
+typedef struct ctab_creep_result {
+  int32_t status;       /* ctab_status of the call */
+  int32_t n_slots;      /* slots of the table; patch[n_slots..] zero */
+  double fx_N;          /* wheel totals over the present patches, side frame [N] */
+  double force_lateral_N;
+  double force_vertical_N;
+  double mz_Nm;         /* sum of the patches' moments (each about its own s origin) [N m] */
+  ctab_creep_patch patch[CTAB_MAX_SLOTS];
+} ctab_creep_result;
+
+/* Creep forces of every slot of one wheel at a prelooked point. NaN/infinite creepages, friction <= 0 or not
+ * finite, a bad material, method or cell count, or a table without strip profiles or with more than 256 strip
+ * samples: CTAB_INVALID_INPUT with every output zeroed. */
+CTAB_API ctab_status ctab_creep_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
+                                          const ctab_creep_input* input, ctab_creep_result* out);
+
+/* A batch for scripting (the Python wrapper): for i < n, prelookup (dy_m[i], second[i]) and the creep forces of
+ * wheel[i] with inputs[i] into out[i]. Returns the most severe status (a failure, else CTAB_CLAMPED, else
+ * CTAB_OK); each out[i] has its own. */
+CTAB_API ctab_status ctab_creep_batch(const ctab_table* table, size_t n, const double* dy_m, const double* second,
+                                      const int32_t* wheel, const ctab_creep_input* inputs, ctab_creep_result* out);
+
+/* One slot's creep forces with that patch's own creepages (a wheel's tread and flange patches roll at different
+ * radii and contact angles). An absent slot: present 0, zeros, the query's status. */
+CTAB_API ctab_status ctab_creep_slot_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
+                                               int32_t slot, const ctab_creep_input* input, ctab_creep_patch* out);
+
+/* The same solver on one patch given by its strips (s evenly spaced, n in 2..256): s [m], half-length a(s) [m],
+ * peak pressure p0(s) [Pa] of the semi-elliptic pressure along x; normal_force_N > 0 rescales the pressure to
+ * that force, 0 keeps it; plane_angle_rad for the side-frame parts. */
+CTAB_API ctab_status ctab_creep_strips(const double* s_m, const double* half_length_m, const double* peak_pressure_Pa,
+                                       uint32_t n, double normal_force_N, double plane_angle_rad,
+                                       const ctab_creep_input* input, ctab_creep_patch* out);
+
+/* Kalker's linear-theory creepage coefficients C11, C22, C23, C33 (out[0..3]) for semi-axes a (rolling) and b
+ * and Poisson's ratio nu (Kalker 1990, Table E.3; linear in a/b or b/a, quadratic in nu on the reciprocals;
+ * ratios beyond 10 are clamped). CTAB_INVALID_INPUT on a bad argument. */
+CTAB_API ctab_status ctab_kalker_coefficients(double a_m, double b_m, double poisson_ratio, double* out);
+
 #ifdef __cplusplus
 }
 #endif
