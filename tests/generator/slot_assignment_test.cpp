@@ -91,7 +91,9 @@ std::string hollow_worn_wheel(double depth_m, double width_m) {
   ProfileReadOptions options;
   const ProfilePoints points =
       read_profile_points(ctab::test::shared_path("profiles/MBench_S1002_v3.prw"), ProfileRole::Wheel, options);
-  const std::string path = ::testing::TempDir() + "hollow_worn_s1002.txt";
+  // One file per test (CTest runs the tests of this file in parallel processes).
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string path = ::testing::TempDir() + "hollow_worn_s1002_" + test + ".txt";
   std::ofstream out(path);
   out.precision(12);
   for (std::size_t i = 0; i < points.y_m.size(); ++i) {
