@@ -2,6 +2,8 @@
 // and Float64, Int32 and Boolean access. Set, Get and DoStep neither allocate nor lock.
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
+#include <iterator>
 
 #include "fmi3/fmi3Functions.h"
 #include "instance.hpp"

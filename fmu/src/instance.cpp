@@ -19,19 +19,25 @@ struct FreeDeleter {
 };
 using Bytes = std::unique_ptr<unsigned char, FreeDeleter>;
 
-// The whole file `path` in memory; nullptr (with *error set) when it cannot be read.
+// The whole file `path` in memory; empty (with `error` set) when it cannot be read.
 Bytes read_file(const char* path, std::size_t& size, const char*& error) noexcept {
+  Bytes bytes;
   std::FILE* file = std::fopen(path, "rb");
-  if (file == nullptr) return error = "cannot open", nullptr;
+  if (file == nullptr) {
+    error = "cannot open";
+    return bytes;
+  }
   long length = -1;
   if (std::fseek(file, 0, SEEK_END) == 0) length = std::ftell(file);
-  Bytes bytes;
-  if (length > 0 && std::fseek(file, 0, SEEK_SET) == 0)
-    bytes.reset(static_cast<unsigned char*>(std::malloc(static_cast<std::size_t>(length))));
-  size = static_cast<std::size_t>(length > 0 ? length : 0);
-  if (length <= 0) error = "empty or unreadable";
-  else if (!bytes) error = "out of memory";
-  else if (std::fread(bytes.get(), 1, size, file) != size) error = "read failed", bytes.reset();
+  size = length > 0 ? static_cast<std::size_t>(length) : 0;
+  if (size == 0 || std::fseek(file, 0, SEEK_SET) != 0) {
+    error = "empty or unreadable";
+  } else {
+    bytes.reset(static_cast<unsigned char*>(std::malloc(size)));
+    if (!bytes) error = "out of memory";
+    else if (std::fread(bytes.get(), 1, size, file) != size) error = "read failed";
+    if (error != nullptr) bytes.reset();
+  }
   std::fclose(file);
   return bytes;
 }

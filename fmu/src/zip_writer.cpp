@@ -53,8 +53,8 @@ std::vector<unsigned char> deflate_raw(const void* data, std::size_t size) {
 
 }  // namespace
 
-void ZipWriter::put_local_header(std::vector<unsigned char>& out, const Entry& e) {
-  put32(out, 0x04034b50u);  // local file header
+// The fields a local header and a central directory entry share: version needed to extract to name length.
+void ZipWriter::put_entry_fields(std::vector<unsigned char>& out, const Entry& e) {
   put16(out, kVersionNeeded);
   put16(out, kUtf8Names);
   put16(out, e.method);
@@ -64,6 +64,11 @@ void ZipWriter::put_local_header(std::vector<unsigned char>& out, const Entry& e
   put32(out, e.compressed_size);
   put32(out, e.size);
   put16(out, static_cast<std::uint32_t>(e.name.size()));
+}
+
+void ZipWriter::put_local_header(std::vector<unsigned char>& out, const Entry& e) {
+  put32(out, 0x04034b50u);  // local file header
+  put_entry_fields(out, e);
   put16(out, 0);  // no extra field
   put_bytes(out, e.name.data(), e.name.size());
 }
@@ -102,15 +107,7 @@ std::vector<unsigned char> ZipWriter::finish() const {
   for (const Entry& e : entries_) {
     put32(out, 0x02014b50u);  // central directory file header
     put16(out, kVersionMadeBy);
-    put16(out, kVersionNeeded);
-    put16(out, kUtf8Names);
-    put16(out, e.method);
-    put16(out, kDosTime);
-    put16(out, kDosDate);
-    put32(out, e.crc);
-    put32(out, e.compressed_size);
-    put32(out, e.size);
-    put16(out, static_cast<std::uint32_t>(e.name.size()));
+    put_entry_fields(out, e);
     put16(out, 0);  // extra field
     put16(out, 0);  // comment
     put16(out, 0);  // disk number

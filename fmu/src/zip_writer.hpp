@@ -27,6 +27,7 @@ class ZipWriter {
     std::uint16_t method = 0;  // 0 stored, 8 deflated
     bool executable = false;
   };
+  static void put_entry_fields(std::vector<unsigned char>& out, const Entry& e);
   static void put_local_header(std::vector<unsigned char>& out, const Entry& e);
   std::vector<unsigned char> bytes_;
   std::vector<Entry> entries_;

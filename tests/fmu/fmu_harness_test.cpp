@@ -194,6 +194,52 @@ TEST_F(FmuHarness, DescriptionNamesEveryQuantityOfEverySlotOfBothWheels) {
   EXPECT_EQ(description_.vr_of("vertical_load"), 2u);
 }
 
+// Every output of the description, read with one Get call per type, compared with the C API's answers.
+struct Outputs {
+  std::vector<fmi3ValueReference> f64, i32, b;
+  std::vector<fmi3Float64> f64_values;
+  std::vector<fmi3Int32> i32_values;
+  std::unique_ptr<fmi3Boolean[]> b_values;
+
+  explicit Outputs(const Description& d)
+      : f64(d.outputs("Float64")), i32(d.outputs("Int32")), b(d.outputs("Boolean")), f64_values(f64.size()),
+        i32_values(i32.size()), b_values(new fmi3Boolean[b.size()]) {}
+  std::size_t count() const { return f64.size() + i32.size() + b.size(); }
+
+  bool get(Fmu& fmu, fmi3Instance instance) {
+    return fmu.get<fmi3GetFloat64TYPE>("fmi3GetFloat64")(instance, f64.data(), f64.size(), f64_values.data(),
+                                                         f64.size()) == fmi3OK &&
+           fmu.get<fmi3GetInt32TYPE>("fmi3GetInt32")(instance, i32.data(), i32.size(), i32_values.data(),
+                                                     i32.size()) == fmi3OK &&
+           fmu.get<fmi3GetBooleanTYPE>("fmi3GetBoolean")(instance, b.data(), b.size(), b_values.get(), b.size()) ==
+               fmi3OK;
+  }
+
+  // Outputs that differ from the answers r[wheel] (doubles compared bit for bit).
+  std::size_t mismatches(const ctab::fmu::Layout& layout, const ctab_result (&r)[2]) const {
+    using ctab::fmu::find_variable;
+    using ctab::fmu::Source;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < f64.size(); ++i) {
+      const ctab::fmu::VariableRef ref = find_variable(f64[i], layout);
+      const double* expected = ref.slot >= 0 ? &r[ref.wheel].patch[ref.slot].q[ref.variable->index]
+                               : ref.variable->source == Source::Roll ? &r[0].roll_rad
+                                                                      : &r[0].rolling_radius_difference_m;
+      n += std::memcmp(expected, &f64_values[i], sizeof(double)) != 0;
+    }
+    for (std::size_t i = 0; i < i32.size(); ++i) {
+      const ctab::fmu::VariableRef ref = find_variable(i32[i], layout);
+      n += i32_values[i] != (ref.variable->source == Source::Status ? r[ref.wheel].status
+                                                                     : r[ref.wheel].worst_case_status);
+    }
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      const ctab::fmu::VariableRef ref = find_variable(b[i], layout);
+      n += b_values[i] != (r[ref.wheel].patch[ref.slot].present != 0);
+    }
+    return n;
+  }
+};
+
 // The standard sequence: instantiate, enter and exit initialisation, then per step set inputs, do step, get every
 // output; terminate, free. Every output equals ctab_query's answer on the same blob, bit for bit.
 TEST_F(FmuHarness, TenThousandStepsEqualTheCApiBitForBit) {
@@ -203,21 +249,16 @@ TEST_F(FmuHarness, TenThousandStepsEqualTheCApiBitForBit) {
   const fmi3Instance instance = instantiate(resources(), description_.token);
   ASSERT_NE(instance, nullptr) << (g_log.empty() ? "" : g_log.back());
   auto set_float64 = fmu_.get<fmi3SetFloat64TYPE>("fmi3SetFloat64");
-  auto get_float64 = fmu_.get<fmi3GetFloat64TYPE>("fmi3GetFloat64");
-  auto get_int32 = fmu_.get<fmi3GetInt32TYPE>("fmi3GetInt32");
-  auto get_boolean = fmu_.get<fmi3GetBooleanTYPE>("fmi3GetBoolean");
   auto do_step = fmu_.get<fmi3DoStepTYPE>("fmi3DoStep");
   ASSERT_EQ(fmu_.get<fmi3EnterInitializationModeTYPE>("fmi3EnterInitializationMode")(instance, fmi3False, 0.0, 0.0,
                                                                                       fmi3False, 0.0), fmi3OK);
   const fmi3ValueReference inputs[2] = {description_.vr_of("dy"), description_.vr_of("vertical_load")};
-  const std::vector<fmi3ValueReference> f64 = description_.outputs("Float64"), i32 = description_.outputs("Int32"),
-                                        b = description_.outputs("Boolean");
-  std::vector<fmi3Float64> f64_values(f64.size());
-  std::vector<fmi3Int32> i32_values(i32.size());
-  const std::unique_ptr<fmi3Boolean[]> b_values(new fmi3Boolean[b.size()]);
   const fmi3Float64 start[2] = {0.0, 80e3};
   ASSERT_EQ(set_float64(instance, inputs, 2, start, 2), fmi3OK);
   ASSERT_EQ(fmu_.get<fmi3ExitInitializationModeTYPE>("fmi3ExitInitializationMode")(instance), fmi3OK);
+  Outputs outputs(description_);
+  const fmi3ValueReference named[2] = {description_.vr_of("left.slot1.max_pressure"),
+                                       description_.vr_of("right.slot0.normal_force")};
   const double h = 1e-3;
   double busy_s = 0.0;
   std::size_t mismatches = 0;
@@ -230,40 +271,21 @@ TEST_F(FmuHarness, TenThousandStepsEqualTheCApiBitForBit) {
     const auto t0 = std::chrono::steady_clock::now();
     ASSERT_EQ(set_float64(instance, inputs, 2, in, 2), fmi3OK);
     ASSERT_EQ(do_step(instance, step * h, h, fmi3True, &event, &terminate, &early, &last), fmi3OK);
-    ASSERT_EQ(get_float64(instance, f64.data(), f64.size(), f64_values.data(), f64_values.size()), fmi3OK);
-    ASSERT_EQ(get_int32(instance, i32.data(), i32.size(), i32_values.data(), i32_values.size()), fmi3OK);
-    ASSERT_EQ(get_boolean(instance, b.data(), b.size(), b_values.get(), b.size()), fmi3OK);
+    ASSERT_TRUE(outputs.get(fmu_, instance));
     busy_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_FALSE(event || terminate || early);
     ASSERT_EQ(last, step * h + h);
     ctab_result r[2];
     for (int w = 0; w < 2; ++w) ctab_query(table, in[0], in[1], w, &r[w]);
-    for (std::size_t i = 0; i < f64.size(); ++i) {
-      const ctab::fmu::VariableRef ref = ctab::fmu::find_variable(f64[i], layout);
-      const double* expected = ref.slot >= 0 ? &r[ref.wheel].patch[ref.slot].q[ref.variable->index]
-                               : ref.variable->source == ctab::fmu::Source::Roll ? &r[0].roll_rad
-                                                                                 : &r[0].rolling_radius_difference_m;
-      mismatches += std::memcmp(expected, &f64_values[i], sizeof(double)) != 0;
-    }
-    for (std::size_t i = 0; i < i32.size(); ++i) {
-      const ctab::fmu::VariableRef ref = ctab::fmu::find_variable(i32[i], layout);
-      mismatches += i32_values[i] != (ref.variable->source == ctab::fmu::Source::Status
-                                          ? r[ref.wheel].status : r[ref.wheel].worst_case_status);
-    }
-    for (std::size_t i = 0; i < b.size(); ++i) {
-      const ctab::fmu::VariableRef ref = ctab::fmu::find_variable(b[i], layout);
-      mismatches += b_values[i] != (r[ref.wheel].patch[ref.slot].present != 0);
-    }
-    // A few outputs by name, independently of the descriptor table.
-    fmi3Float64 named[2];
-    const fmi3ValueReference named_vrs[2] = {description_.vr_of("left.slot1.max_pressure"),
-                                             description_.vr_of("right.slot0.normal_force")};
-    ASSERT_EQ(get_float64(instance, named_vrs, 2, named, 2), fmi3OK);
-    mismatches += named[0] != r[1].patch[1].q[CTAB_MAX_PRESSURE_PA] || named[1] != r[0].patch[0].q[CTAB_NORMAL_FORCE_N];
+    mismatches += outputs.mismatches(layout, r);
+    // Two outputs by name, independently of the descriptor table.
+    fmi3Float64 values[2];
+    ASSERT_EQ(fmu_.get<fmi3GetFloat64TYPE>("fmi3GetFloat64")(instance, named, 2, values, 2), fmi3OK);
+    mismatches += values[0] != r[1].patch[1].q[CTAB_MAX_PRESSURE_PA] || values[1] != r[0].patch[0].q[CTAB_NORMAL_FORCE_N];
   }
   EXPECT_EQ(mismatches, 0u);
   std::printf("FMU step (set 2 inputs, fmi3DoStep, get %zu outputs): %.2f us mean over 10000 steps\n",
-              f64.size() + i32.size() + b.size(), busy_s / 10000 * 1e6);
+              outputs.count(), busy_s / 10000 * 1e6);
   EXPECT_EQ(fmu_.get<fmi3TerminateTYPE>("fmi3Terminate")(instance), fmi3OK);
   fmu_.get<fmi3FreeInstanceTYPE>("fmi3FreeInstance")(instance);
   ctab_table_close(table);
