@@ -1,5 +1,6 @@
-// `ctab export FILE --format blob|c-header -o OUT [--single-precision] [--name IDENT]`: a table (HDF5 or blob) as
-// a lookup blob or as a C header of constant arrays, for targets without HDF5 or a file system.
+// `ctab export FILE --format blob|c-header|fmu -o OUT [--single-precision] [--name IDENT]`: a table (HDF5 or blob)
+// as a lookup blob, as a C header of constant arrays (targets without HDF5 or a file system), or as an FMI 3.0
+// Co-Simulation FMU (docs/fmu.md).
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -7,10 +8,13 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "ctab/core/error.hpp"
+#include "ctab/fmu/export.hpp"
 #include "ctab/lookup/blob.hpp"
 #include "ctab/lookup/hdf5_table.hpp"
 #include "ctab/lookup/table.hpp"
@@ -18,6 +22,7 @@
 #include "isolated_read.hpp"
 #include "load_errors.hpp"
 #include "output_guard.hpp"
+#include "version.hpp"
 
 namespace ctab::cli {
 
@@ -25,6 +30,7 @@ namespace {
 
 struct ExportOptions {
   std::string input, output, format = "blob", name = "ctab_table_blob";
+  std::string wrapper;  // --format fmu: the wrapper shared object found beside this executable
   bool single_precision = false, force = false;
 };
 
@@ -67,6 +73,12 @@ int export_table(const ExportOptions& o, IsolatedChild& child) {
   const InterruptCleanup cleanup(o.output);
   if (o.format == "blob") {
     write_atomically(o.output, blob.data(), blob.size());
+  } else if (o.format == "fmu") {
+    const fmu::FmuSource source{std::string("ctab ") + CTAB_VERSION,
+                                std::filesystem::path(o.input).filename().string()};
+    const std::vector<unsigned char> archive = fmu::build_fmu(blob, o.wrapper, source);
+    write_atomically(o.output, archive.data(), archive.size());
+    std::printf("%s: FMI 3.0 Co-Simulation FMU, %zu bytes\n", o.output.c_str(), archive.size());
   } else {
     const std::string header = lookup::blob_c_header(blob, o.name);
     write_atomically(o.output, header.data(), header.size());
@@ -77,8 +89,16 @@ int export_table(const ExportOptions& o, IsolatedChild& child) {
   return 0;
 }
 
-int run_export(const ExportOptions& o) {
+int run_export(ExportOptions o) {
   check_output_path(o.output, {o.input}, OutputKind::Export, o.force);
+  if (o.format == "fmu") {
+    const fmu::WrapperLocation wrapper = fmu::find_wrapper();
+    if (!wrapper.found)
+      throw IoError("ctab export --format fmu: the FMU wrapper " + wrapper.path +
+                    " is missing (it is built and installed with ctab in <prefix>/lib/ctab/fmu; set CTAB_FMU_WRAPPER "
+                    "to its path)");
+    o.wrapper = wrapper.path;
+  }
   return run_isolated([&](IsolatedChild& child) { return export_table(o, child); }).exit_code;
 }
 
@@ -87,11 +107,12 @@ int run_export(const ExportOptions& o) {
 Command add_export_command(CLI::App& parent) {
   auto o = std::make_shared<ExportOptions>();
   CLI::App* app =
-      parent.add_subcommand("export", "Write a table as a lookup blob or a C header (targets without HDF5)");
+      parent.add_subcommand("export", "Write a table as a lookup blob, a C header or an FMI 3.0 FMU");
   app->add_option("file", o->input, "table (.h5 or blob)")->required();
-  app->add_option("--format", o->format, "blob (default) or c-header")->check(CLI::IsMember({"blob", "c-header"}));
+  app->add_option("--format", o->format, "blob (default), c-header or fmu (FMI 3.0 Co-Simulation, x86-64 Linux)")
+      ->check(CLI::IsMember({"blob", "c-header", "fmu"}));
   app->add_option("-o,--output", o->output,
-                  "output file; replaced only on success, and only if it is a blob or a header export wrote")
+                  "output file; replaced only on success, and only if it is a blob, header or FMU export wrote")
       ->required();
   app->add_flag("--force", o->force, "replace OUTPUT even if it is a ctab table (never anything else)");
   app->add_flag("--single-precision", o->single_precision, "store values as float (half the size)");

@@ -1,5 +1,7 @@
 #include "output_guard.hpp"
 
+#include "ctab/fmu/export.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -70,6 +72,7 @@ bool is_ctab_table(const std::string& path) {
 FileKind file_kind(const std::string& path) {
   if (starts_with(path, std::string_view(lookup::kBlobMagic, sizeof lookup::kBlobMagic))) return FileKind::Blob;
   if (starts_with(path, kExportHeaderStart)) return FileKind::Header;
+  if (fmu::is_exported_fmu(path)) return FileKind::Header;  // an FMU `ctab export` wrote: as replaceable
   return is_ctab_table(path) ? FileKind::Table : FileKind::Foreign;
 }
 
