@@ -24,6 +24,12 @@ TableData make_synthetic(const SyntheticOptions& o) {
                                 [](double a, double b) { return std::abs(a - b) < 1e-12; }),
                     data.dy_m.end());
   }
+  if (!o.extra_dy_m.empty()) {
+    data.dy_m.insert(data.dy_m.end(), o.extra_dy_m.begin(), o.extra_dy_m.end());
+    std::sort(data.dy_m.begin(), data.dy_m.end());
+    data.dy_m.erase(std::unique(data.dy_m.begin(), data.dy_m.end(), [](double a, double b) { return b - a < 0.2e-6; }),
+                    data.dy_m.end());
+  }
   const std::size_t n_dy = data.dy_m.size();
   for (std::size_t j = 0; j < o.n_second; ++j) data.second.push_back(60e3 + 20e3 * static_cast<double>(j));
   data.second_axis = SecondAxis::VerticalLoad;
@@ -138,6 +144,16 @@ TableData make_located(const LocatedOptions& o) {
         }
     }
   return data;
+}
+
+SyntheticOptions adaptive_options() {
+  SyntheticOptions o{.dy_step_m = 0.5e-3, .strip_samples = 32};
+  for (std::size_t k = 0; k < 34; ++k) {
+    const double centre = -11.62e-3 + 0.7e-3 * static_cast<double>(k);
+    for (const double offset : {0.5e-6, 1.5e-6, 4e-6, 10e-6, 25e-6, 60e-6, 150e-6, 300e-6})
+      o.extra_dy_m.insert(o.extra_dy_m.end(), {centre - offset, centre + offset});
+  }
+  return o;
 }
 
 bool identical(const std::vector<ctab_result>& a, const std::vector<ctab_result>& b) {

@@ -22,7 +22,14 @@ struct SyntheticOptions {
   //! A refined zone of the dy axis: nodes from refine_from_m to refine_to_m every refine_step_m between the
   //! uniform ones (0: none).
   double refine_from_m = 0.0, refine_to_m = 0.0, refine_step_m = 0.0;
+  //! More nodes of the dy axis (merged in; a node within 0.2 um of the one before it is dropped).
+  std::vector<double> extra_dy_m = {};
 };
+
+//! An adaptive axis as the generator writes one: 0.5 mm steps over -12 .. 12 mm and 34 clusters graded from 1 um to
+//! 0.6 mm (nodes at +-0.5, 1.5, 4, 10, 25, 60, 150 and 300 um about each centre): 593 nodes, the default table's
+//! shape otherwise (one load, 3 slots, 32 strip samples).
+SyntheticOptions adaptive_options();
 
 //! The value of quantity q of slot s, wheel w, at (dy, second) where the patch exists (linear in both).
 double synthetic_value(std::size_t q, std::size_t s, std::size_t w, double dy_m, double second);
