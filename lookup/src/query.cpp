@@ -160,6 +160,16 @@ template <typename T>
   return static_cast<double>(record[off_present_ + slot]);
 }
 
+template <typename T>
+[[gnu::noinline]] void Table::band_rows(const ctab_location& where, std::uint32_t wheel, std::size_t slot,
+                                       std::uint32_t band, double* v0, double& p0, double* v1,
+                                       double& p1) const noexcept {
+  std::uint32_t node[2];
+  band_nodes(where, band, node);
+  if (node[0] != kNoNode) p0 = node_slot<T>(case_(node[0], where.i_second, wheel), slot, v0);
+  if (node[1] != kNoNode) p1 = node_slot<T>(case_(node[1], where.i_second + 1, wheel), slot, v1);
+}
+
 template <typename T, bool kCubic>
 [[gnu::always_inline]] inline void Table::wheelset(const ctab_location& where, std::uint32_t wheel,
                                                    const DyBasis& basis, ctab_result& out) const noexcept {
@@ -223,12 +233,8 @@ template <typename T, bool kCubic>
       double p0 = dy_slot<T, kCubic>(records_ + lo0, records_ + hi0, slope_lo0, slope_hi0, s, basis, v0);
       double p1 = dy_slot<T, kCubic>(records_ + lo1, records_ + hi1, slope_lo1, slope_hi1, s, basis, v1);
       // In a jump band a row whose own jump lies on the other side of the query gives its one-sided value.
-      if (const std::uint32_t band = detail::band_of(records_[lo0 + off_rule_ + s]); band != 0) {
-        std::uint32_t node[2];
-        band_nodes(where, band, node);
-        if (node[0] != kNoNode) p0 = node_slot<T>(case_(node[0], where.i_second, wheel), s, v0);
-        if (node[1] != kNoNode) p1 = node_slot<T>(case_(node[1], where.i_second + 1, wheel), s, v1);
-      }
+      if (const std::uint32_t band = detail::band_of(records_[lo0 + off_rule_ + s]); band != 0) [[unlikely]]
+        band_rows<T>(where, wheel, s, band, v0, p0, v1, p1);
       const double w1 = detail::row_weight(p0, p1, g), w0 = 1.0 - w1;
       for (std::size_t q = 0; q < kQuantities; ++q) v0[q] = w0 * v0[q] + w1 * v1[q];
       set_presence(out.patch[s], w0 * p0 + w1 * p1);

@@ -105,6 +105,10 @@ class Table {
   //! gives instead of its own blend, or kNoNode where the row's own side of its jump is the query's.
   void band_nodes(const ctab_location& where, std::uint32_t band, std::uint32_t node[2]) const noexcept;
   static constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;
+  //! The rows' values and presence of slot `slot` in jump band `band`: replaced by the node band_nodes names.
+  template <typename T>
+  void band_rows(const ctab_location& where, std::uint32_t wheel, std::size_t slot, std::uint32_t band, double* v0,
+                 double& p0, double* v1, double& p1) const noexcept;
   //! One slot's values (into v) and presence at one case.
   template <typename T>
   double node_slot(std::size_t c, std::size_t slot, double* v) const noexcept;
