@@ -1,7 +1,8 @@
 // Table::prelookup and Table::query: index search (dy: arithmetic on a uniform axis, on an adaptive one an index of
 // bounded size and a fixed-step binary search within an entry's cells; fixed-step binary search on the second axis) and interpolation of
-// every slot's record, with the blending rules of docs/method.md "Tables: sweep, slots, jumps, refined axis". No allocation, no branch on the table's values, loops
-// bounded by the table's sizes only.
+// every slot's record, with the blending rules of docs/method.md "Tables: sweep, slots, jumps, refined axis". No allocation; one
+// branch on the table's values (a cell in a jump band: lookup/README.md), bounded work either way; loops bounded by
+// the table's sizes only.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
