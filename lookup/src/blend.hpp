@@ -5,6 +5,19 @@
 
 namespace ctab::lookup::detail {
 
+// A record's rule field holds CellRule + kBandFactor x the jump band of its slot in the row pair above it
+// (Table::JumpBand; 0: none). Exact in float up to 2^24, so bands are numbered below 2^22.
+inline constexpr std::uint32_t kBandFactor = 4;
+inline constexpr std::uint32_t kMaxBands = std::uint32_t{1} << 22;
+template <typename T>
+inline std::uint8_t rule_of(T code) noexcept {
+  return static_cast<std::uint8_t>(static_cast<std::uint32_t>(code) % kBandFactor);
+}
+template <typename T>
+inline std::uint32_t band_of(T code) noexcept {
+  return static_cast<std::uint32_t>(code) / kBandFactor;
+}
+
 // Weight of the upper neighbour = kF[rule] * f + kStep[rule] * (f >= 0.5) + kConst[rule], per CellRule value
 // (Interpolate, Nearest, LowerOnly, UpperOnly).
 inline constexpr double kF[4] = {1.0, 0.0, 0.0, 0.0};

@@ -1,7 +1,8 @@
-// Table::prelookup and Table::query: index search (dy: arithmetic on a uniform axis, on a refined one an index on
-// the smallest step and at most two steps either way; fixed-step binary search on the second axis) and interpolation of
-// every slot's record, with the blending rules of docs/method.md "Tables: sweep, slots, jumps, refined axis". No allocation, no branch on the table's values, loops
-// bounded by the table's sizes only.
+// Table::prelookup and Table::query: index search (dy: arithmetic on a uniform axis, on an adaptive one an index of
+// bounded size and a fixed-step binary search within an entry's cells; fixed-step binary search on the second axis) and interpolation of
+// every slot's record, with the blending rules of docs/method.md "Tables: sweep, slots, jumps, refined axis". No allocation; one
+// branch on the table's values (a cell in a jump band: lookup/README.md), bounded work either way; loops bounded by
+// the table's sizes only.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -54,9 +55,8 @@ void Table::prelookup(double dy_m, double second, ctab_location& out) const noex
   }
   const std::size_t n_2 = second_.size();
   const bool finite = std::isfinite(dy_m) && (n_2 == 1 || std::isfinite(second));
-  // dy: arithmetic on a uniform axis; on a refined one the index entry of the point's smallest-step interval, then
-  // the cell that holds it (the entry's or, where rounding put the point across a node, a neighbour: two steps
-  // either way bound it).
+  // dy: arithmetic on a uniform axis; on an adaptive one the index entry of the point, then a binary search of a
+  // fixed number of steps among the cells that entry can hold (Table::dy_search_length_ from its cell less one).
   const double first = dy_.front(), last = dy_.back();
   const double d = finite ? dy_m : first;
   bool clamped = false;
@@ -73,9 +73,13 @@ void Table::prelookup(double dy_m, double second, ctab_location& out) const noex
     const double d_clamped = std::min(std::max(d, first), last);
     clamped = d < first - kClampTolerance * cell_width_.front() || d > last + kClampTolerance * cell_width_.back();
     const auto k = std::min(static_cast<std::size_t>((d_clamped - first) * inv_index_step_), dy_index_.size() - 1);
-    std::uint32_t i = dy_index_[k];
-    for (int step = 0; step < 2; ++step) i -= (i > 0 && d_clamped < dy_[i]) ? 1u : 0u;
-    for (int step = 0; step < 2; ++step) i += (i + 2 < n_dy_ && d_clamped >= dy_[i + 1]) ? 1u : 0u;
+    const std::uint32_t n_cells = n_dy_ - 1;
+    std::uint32_t i = std::min(dy_index_[k] - (dy_index_[k] > 0 ? 1u : 0u), n_cells - dy_search_length_);
+    for (std::uint32_t length = dy_search_length_; length > 1;) {  // the largest i with dy_[i] <= d, or the first
+      const std::uint32_t half = length / 2;
+      i = dy_[i + half] <= d_clamped ? i + half : i;
+      length -= half;
+    }
     out.i_dy = i;
     out.f_dy = std::min(std::max((d_clamped - dy_[i]) * inv_cell_width_[i], 0.0), 1.0);
     out.dy_m = d_clamped;
@@ -118,7 +122,7 @@ template <typename T, bool kCubic>
                                                     const T* __restrict slope_lo, const T* __restrict slope_hi,
                                                     std::size_t slot, const DyBasis& basis,
                                                     double* __restrict v) const noexcept {
-  const auto rule = static_cast<std::uint8_t>(lo[off_rule_ + slot]);
+  const std::uint8_t rule = detail::rule_of(lo[off_rule_ + slot]);
   const double w_hi = detail::upper_weight(rule, basis.f, basis.step), w_lo = 1.0 - w_hi;
   const T* __restrict a = lo + slot * kQuantities;
   const T* __restrict b = hi + slot * kQuantities;
@@ -136,6 +140,35 @@ template <typename T, bool kCubic>
       v[q] = w_lo * static_cast<double>(a[q]) + w_hi * static_cast<double>(b[q]);
   }
   return w_lo * static_cast<double>(lo[off_present_ + slot]) + w_hi * static_cast<double>(hi[off_present_ + slot]);
+}
+
+void Table::band_nodes(const ctab_location& where, std::uint32_t band, std::uint32_t node[2]) const noexcept {
+  const JumpBand& b = bands_[band];
+  const double g = where.f_second;
+  const bool after = where.dy_m >= (1.0 - g) * b.x_lo + g * b.x_hi;  // the query's side of the interpolated jump
+  const std::uint32_t cells[2] = {b.cell_lo, b.cell_hi};
+  for (std::size_t r = 0; r < 2; ++r) {
+    // The row's own side at this point: past its jump cell, or in it at or past the midpoint (CellRule::Nearest).
+    const bool own_after = where.i_dy > cells[r] || (where.i_dy == cells[r] && where.f_dy >= 0.5);
+    node[r] = own_after == after ? kNoNode : cells[r] + (after ? 1u : 0u);
+  }
+}
+
+template <typename T>
+[[gnu::always_inline]] inline double Table::node_slot(std::size_t c, std::size_t slot, double* v) const noexcept {
+  const T* record = records<T>() + c * stride_;
+  for (std::size_t q = 0; q < kQuantities; ++q) v[q] = static_cast<double>(record[slot * kQuantities + q]);
+  return static_cast<double>(record[off_present_ + slot]);
+}
+
+template <typename T>
+[[gnu::noinline]] void Table::band_rows(const ctab_location& where, std::uint32_t wheel, std::size_t slot,
+                                       std::uint32_t band, double* v0, double& p0, double* v1,
+                                       double& p1) const noexcept {
+  std::uint32_t node[2];
+  band_nodes(where, band, node);
+  if (node[0] != kNoNode) p0 = node_slot<T>(case_(node[0], where.i_second, wheel), slot, v0);
+  if (node[1] != kNoNode) p1 = node_slot<T>(case_(node[1], where.i_second + 1, wheel), slot, v1);
 }
 
 template <typename T, bool kCubic>
@@ -198,8 +231,11 @@ template <typename T, bool kCubic>
     double v1[kQuantities];
     for (std::size_t s = 0; s < n_slots_; ++s) {
       double* v0 = out.patch[s].q;
-      const double p0 = dy_slot<T, kCubic>(records_ + lo0, records_ + hi0, slope_lo0, slope_hi0, s, basis, v0);
-      const double p1 = dy_slot<T, kCubic>(records_ + lo1, records_ + hi1, slope_lo1, slope_hi1, s, basis, v1);
+      double p0 = dy_slot<T, kCubic>(records_ + lo0, records_ + hi0, slope_lo0, slope_hi0, s, basis, v0);
+      double p1 = dy_slot<T, kCubic>(records_ + lo1, records_ + hi1, slope_lo1, slope_hi1, s, basis, v1);
+      // In a jump band a row whose own jump lies on the other side of the query gives its one-sided value.
+      if (const std::uint32_t band = detail::band_of(records_[lo0 + off_rule_ + s]); band != 0) [[unlikely]]
+        band_rows<T>(where, wheel, s, band, v0, p0, v1, p1);
       const double w1 = detail::row_weight(p0, p1, g), w0 = 1.0 - w1;
       for (std::size_t q = 0; q < kQuantities; ++q) v0[q] = w0 * v0[q] + w1 * v1[q];
       set_presence(out.patch[s], w0 * p0 + w1 * p1);

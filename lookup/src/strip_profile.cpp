@@ -26,13 +26,25 @@ ctab_status Table::strip_profile(const ctab_location& where, std::int32_t wheel,
   for (std::size_t r = 0; r < 2; ++r) {
     cases[2 * r] = case_(where.i_dy, rows[r], w);
     cases[2 * r + 1] = case_(where.i_dy + 1, rows[r], w);
-    const auto rule = static_cast<std::uint8_t>(field(cases[2 * r], off_rule_ + s));
+    const std::uint8_t rule = detail::rule_of(field(cases[2 * r], off_rule_ + s));
     const double w_hi = detail::upper_weight(rule, where.f_dy, step);
     weights[2 * r] = 1.0 - w_hi;
     weights[2 * r + 1] = w_hi;
-    presence[r] =
-        (1.0 - w_hi) * field(cases[2 * r], off_present_ + s) + w_hi * field(cases[2 * r + 1], off_present_ + s);
   }
+  // In a jump band a row whose own jump lies on the other side of the query gives its one-sided node (as query).
+  if (const std::uint32_t band = n_2 > 1 ? detail::band_of(field(cases[0], off_rule_ + s)) : 0; band != 0) {
+    std::uint32_t node[2];
+    band_nodes(where, band, node);
+    for (std::size_t r = 0; r < 2; ++r)
+      if (node[r] != kNoNode) {
+        cases[2 * r] = cases[2 * r + 1] = case_(node[r], rows[r], w);
+        weights[2 * r] = 1.0;
+        weights[2 * r + 1] = 0.0;
+      }
+  }
+  for (std::size_t r = 0; r < 2; ++r)
+    presence[r] = weights[2 * r] * field(cases[2 * r], off_present_ + s) +
+                  weights[2 * r + 1] * field(cases[2 * r + 1], off_present_ + s);
   const double w1 = n_2 > 1 ? detail::row_weight(presence[0], presence[1], where.f_second) : 0.0;
   for (std::size_t k = 0; k < 4; ++k) weights[k] *= k < 2 ? 1.0 - w1 : w1;
   if ((1.0 - w1) * presence[0] + w1 * presence[1] < 0.5 || strip_samples_ == 0)

@@ -48,10 +48,8 @@ LoadResult check_axes(const TableData& data) {
   const double span = data.dy_m.back() - data.dy_m.front();
   if (!usable_step(smallest_step) || !usable_step(span))
     return fail(CTAB_ERR_AXES, "the dy axis's steps or span are too small or too large to divide by");
-  const double mean_step = span / static_cast<double>(n_dy - 1);
-  if (smallest_step < mean_step / kMaxDyRefinement)
-    return fail(CTAB_ERR_AXES, "the dy axis's smallest step is finer than 1/" +
-                                   std::to_string(static_cast<int>(kMaxDyRefinement)) + " of its mean step");
+  if (!tables::dy_step_allowed(smallest_step))
+    return fail(CTAB_ERR_AXES, "the dy axis has a step finer than 1e-7 m (the smallest a located jump's cell may be)");
   for (std::size_t i = 1; i < n_2; ++i) {
     if (!(data.second[i] > data.second[i - 1]))
       return fail(CTAB_ERR_AXES, "the second axis is not strictly increasing at index " + std::to_string(i));

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "blend.hpp"
 #include "ctab/lookup/table.hpp"
 #include "load_guard.hpp"
 
@@ -17,6 +18,10 @@ constexpr std::size_t kAlignBytes = 64;     // a cache line
 constexpr double kUniformTolerance = 1e-9;  // relative to the dy span
 // Largest PCHIP slope times a cell's width: with values within kMaxTableValue, a cubic's four terms stay finite.
 constexpr double kMaxSlopeTerm = 1e306;
+// The adaptive axis's index: up to this many entries per cell and this many in all (its size stays bounded while the
+// search within an entry's cells stays short where nodes cluster, as at located jumps).
+constexpr double kIndexEntriesPerCell = 8.0;
+constexpr double kMaxIndexEntries = 65536.0;
 
 bool succeeded(std::int8_t case_status) noexcept { return case_status >= 0; }  // converged, no contact, under-resolved
 
@@ -101,10 +106,55 @@ double record_value(const TableData& data, const RecordLayout& layout, std::size
   return data.present[p] ? data.quantities[p * kQuantities + k % kQuantities] : 0.0;
 }
 
+// The jump bands (Table::JumpBand; [0] unused) and, per patch index (i_dy, i_second, wheel, slot), the band its
+// cell (i_dy, i_dy + 1) lies in between rows i_second and i_second + 1 (0: none). Per wheel and slot, the jumps of
+// two neighbouring rows pair up in dy order where both rows list the same kinds in the same order (else the rows
+// blend as without jumps bands); a pair in different cells gives a band over the cells from one to the other, unless
+// one of those cells lies in an earlier band of the slot already.
+struct JumpBands {
+  std::vector<JumpBand> bands;
+  std::vector<std::uint32_t> of_patch;
+};
+
+JumpBands plan_jump_bands(const TableData& data) {
+  const std::size_t n_2 = data.n_second(), n_slots = data.n_slots;
+  JumpBands out;
+  out.bands.resize(1);
+  out.of_patch.assign(data.present.size(), 0);
+  if (n_2 < 2) return out;
+  std::vector<std::vector<Jump>> by_row(n_2 * kWheels * n_slots);  // (i_second, wheel, slot), sorted by i_dy
+  for (const Jump& j : data.jumps) by_row[(j.i_second * kWheels + j.wheel) * n_slots + j.slot].push_back(j);
+  for (auto& jumps : by_row)
+    std::sort(jumps.begin(), jumps.end(), [](const Jump& a, const Jump& b) { return a.i_dy < b.i_dy; });
+  const auto mid = [&](std::uint32_t i) { return 0.5 * (data.dy_m[i] + data.dy_m[i + 1]); };
+  for (std::size_t i2 = 0; i2 + 1 < n_2; ++i2)
+    for (std::size_t w = 0; w < kWheels; ++w)
+      for (std::size_t s = 0; s < n_slots; ++s) {
+        const auto& lo = by_row[(i2 * kWheels + w) * n_slots + s];
+        const auto& hi = by_row[((i2 + 1) * kWheels + w) * n_slots + s];
+        if (lo.size() != hi.size() || !std::equal(lo.begin(), lo.end(), hi.begin(), [](const Jump& a, const Jump& b) {
+              return a.kind == b.kind;
+            }))
+          continue;
+        for (std::size_t k = 0; k < lo.size(); ++k) {
+          const std::uint32_t a = lo[k].i_dy, b = hi[k].i_dy;
+          const std::uint32_t first = std::min(a, b), last = std::max(a, b);
+          bool free = a != b;
+          for (std::uint32_t i = first; free && i <= last; ++i) free = out.of_patch[data.patch_index(i, i2, w, s)] == 0;
+          if (!free) continue;
+          const auto band = static_cast<std::uint32_t>(out.bands.size());
+          out.bands.push_back({mid(a), mid(b), a, b});
+          for (std::uint32_t i = first; i <= last; ++i) out.of_patch[data.patch_index(i, i2, w, s)] = band;
+        }
+      }
+  return out;
+}
+
 // One record per case, in T, into `records` (zeroed): quantities (zero for absent patches), presence, the rule of the
 // cell that starts at the case, status, roll and delta r.
 template <typename T>
-void case_records(const TableData& data, const RecordLayout& layout, T* records) {
+void case_records(const TableData& data, const RecordLayout& layout, const std::vector<std::uint32_t>& band_of_patch,
+                  T* records) {
   const std::size_t n_dy = data.n_dy(), n_2 = data.n_second(), n_slots = data.n_slots;
   std::vector<std::uint8_t> jump(data.present.size(), 0);  // by the patch index of the cell's lower end
   for (const Jump& j : data.jumps) jump[data.patch_index(j.i_dy, j.i_second, j.wheel, j.slot)] = 1;
@@ -122,7 +172,7 @@ void case_records(const TableData& data, const RecordLayout& layout, T* records)
           if (i + 1 < n_dy)
             rule = cell_rule(data.case_status[c], data.case_status[data.case_index(i + 1, i2, w)], data.present[p] != 0,
                              data.present[data.patch_index(i + 1, i2, w, s)] != 0, jump[p] != 0);
-          record[layout.rule + s] = static_cast<T>(rule);
+          record[layout.rule + s] = static_cast<T>(static_cast<std::uint32_t>(rule) + detail::kBandFactor * band_of_patch[p]);
         }
         record[layout.status] = static_cast<T>(data.case_status[c]);
         record[layout.roll] = static_cast<T>(record_value(data, layout, c, layout.roll));
@@ -143,7 +193,7 @@ bool pchip_slopes(const TableData& data, const T* records, const RecordLayout& l
   const double largest = std::min(kMaxSlopeTerm / widest, static_cast<double>(std::numeric_limits<T>::max()));
   bool finite = true;
   const auto interpolable = [&](std::size_t c, std::size_t s) {
-    return records[c * stride + layout.rule + s] == static_cast<T>(CellRule::Interpolate);
+    return detail::rule_of(records[c * stride + layout.rule + s]) == static_cast<std::uint8_t>(CellRule::Interpolate);
   };
   const auto put = [&](std::size_t c, std::size_t k, bool has_left, bool has_right) {
     const double v = record_value(data, layout, c, k);
@@ -192,9 +242,15 @@ LoadResult Table::build(const TableData& data, TableData* consumed, const LoadOp
   off_status_ = layout.status;
   off_roll_ = layout.roll;
   stride_ = layout.stride;
+  JumpBands bands = plan_jump_bands(data);
+  if (bands.bands.size() >= detail::kMaxBands) {
+    *this = Table{};
+    return {CTAB_ERR_CONTENT, "more jumps move between second-axis rows than the lookup can hold (4194303)"};
+  }
   const bool slopes_ok =
-      options.single_precision ? build_records<float>(data, width, options, records_f_, slopes_f_)
-                               : build_records<double>(data, width, options, records_d_, slopes_d_);
+      options.single_precision ? build_records<float>(data, width, bands.of_patch, options, records_f_, slopes_f_)
+                               : build_records<double>(data, width, bands.of_patch, options, records_d_, slopes_d_);
+  bands_ = std::move(bands.bands);
   if (!slopes_ok) {
     *this = Table{};
     return {CTAB_ERR_CONTENT, "a value changes too fast between neighbouring dy rows for PCHIP slopes to stay finite"};
@@ -221,11 +277,12 @@ LoadResult Table::build(const TableData& data, TableData* consumed, const LoadOp
 }
 
 template <typename T, typename Storage>
-bool Table::build_records(const TableData& data, const std::vector<double>& width, const LoadOptions& options,
+bool Table::build_records(const TableData& data, const std::vector<double>& width,
+                          const std::vector<std::uint32_t>& band_of_patch, const LoadOptions& options,
                           Storage& records, Storage& slopes) {
   const std::size_t count = data.n_dy() * data.n_second() * kWheels * stride_;
   T* at = allocate_aligned<T>(records, count);
-  case_records<T>(data, RecordLayout{off_present_, off_rule_, off_status_, off_roll_, stride_}, at);
+  case_records<T>(data, RecordLayout{off_present_, off_rule_, off_status_, off_roll_, stride_}, band_of_patch, at);
   if (options.interpolation != CTAB_PCHIP) return true;
   return pchip_slopes<T>(data, at, RecordLayout{off_present_, off_rule_, off_status_, off_roll_, stride_}, width,
                          allocate_aligned<T>(slopes, count));
@@ -256,19 +313,31 @@ void Table::build_dy_index(const std::vector<double>& dy_m, const std::vector<do
   inv_cell_width_.resize(width.size());
   std::transform(width.begin(), width.end(), inv_cell_width_.begin(), [](double h) { return 1.0 / h; });
   dy_index_.clear();
+  dy_search_length_ = 0;
   if (uniform) return;  // arithmetic search (prelookup)
-  // One entry per smallest step (validate bounds the count by kMaxDyRefinement per node): the cell holding its start.
+  // Entries on a step of the smallest cell's width where that is few, else kIndexEntriesPerCell per cell (at most
+  // kMaxIndexEntries): entry k is the cell holding dy_front + k x step, the last the last cell.
+  const std::size_t n_dy = dy_m.size(), n_cells = n_dy - 1;
+  const double span = dy_m.back() - dy_m.front();
   const double smallest = *std::min_element(width.begin(), width.end());
-  const std::size_t n_dy = dy_m.size();
-  const auto entries = static_cast<std::size_t>((dy_m.back() - dy_m.front()) / smallest) + 1;
-  dy_index_.resize(entries);
+  const double wanted = std::min({std::ceil(span / smallest), kIndexEntriesPerCell * static_cast<double>(n_cells),
+                                  kMaxIndexEntries});
+  const auto entries = static_cast<std::size_t>(std::max(wanted, 1.0));
+  const double step = span / static_cast<double>(entries);
+  dy_index_.resize(entries + 1);
   std::uint32_t i = 0;
-  for (std::size_t k = 0; k < entries; ++k) {
-    const double at = dy_m.front() + smallest * static_cast<double>(k);
+  for (std::size_t k = 0; k <= entries; ++k) {
+    const double at = k == entries ? dy_m.back() : dy_m.front() + step * static_cast<double>(k);
     while (i + 2 < n_dy && dy_m[i + 1] <= at) ++i;
     dy_index_[k] = i;
   }
-  inv_index_step_ = 1.0 / smallest;
+  // A point in entry k's interval lies in a cell from dy_index_[k] to dy_index_[k + 1]; one more either way covers
+  // a point that rounding puts across an entry's boundary.
+  std::size_t length = 1;
+  for (std::size_t k = 0; k < entries; ++k)
+    length = std::max<std::size_t>(length, dy_index_[k + 1] - dy_index_[k] + 3);
+  dy_search_length_ = static_cast<std::uint32_t>(std::min(length, n_cells));
+  inv_index_step_ = 1.0 / step;
 }
 
 double Table::field(std::size_t c, std::size_t offset) const noexcept {
@@ -281,7 +350,7 @@ std::size_t Table::memory_bytes() const noexcept {
          (records_d_.storage.size() + slopes_d_.storage.size() + second_.size() + strip_a_d_.size() +
           strip_p0_d_.size() + dy_.size() + cell_width_.size() + inv_cell_width_.size()) *
              sizeof(double) +
-         dy_index_.size() * sizeof(std::uint32_t) +
+         dy_index_.size() * sizeof(std::uint32_t) + bands_.size() * sizeof(JumpBand) +
          (records_f_.storage.size() + slopes_f_.storage.size() + strip_a_f_.size() + strip_p0_f_.size()) *
              sizeof(float);
 }

@@ -28,14 +28,10 @@ TableResult check_axes(const Table& t, const std::string& path) {
   for (std::size_t i = 1; i < dy.size(); ++i)
     if (!(dy[i] > dy[i - 1]))
       return {TableStatus::InvalidContent, axis + "[" + std::to_string(i) + "]: the axis must be strictly increasing"};
-  if (dy.size() >= 2) {
-    const double mean_step = (dy.back() - dy.front()) / static_cast<double>(dy.size() - 1);
-    for (std::size_t i = 1; i < dy.size(); ++i)
-      if (dy[i] - dy[i - 1] < mean_step / kMaxDyRefinement)
-        return {TableStatus::InvalidContent, axis + "[" + std::to_string(i) + "]: a step finer than 1/" +
-                                                 std::to_string(static_cast<int>(kMaxDyRefinement)) +
-                                                 " of the axis's mean step"};
-  }
+  for (std::size_t i = 1; i < dy.size(); ++i)
+    if (!dy_step_allowed(dy[i] - dy[i - 1]))
+      return {TableStatus::InvalidContent, axis + "[" + std::to_string(i) + "]: a step finer than " +
+                                               "1e-7 m (tables::kMinDyStep)"};
   for (std::size_t i = 0; i < t.second_axis.size(); ++i)
     if (!(t.second_axis[i] > 0.0) || (i > 0 && !(t.second_axis[i] > t.second_axis[i - 1])))
       return {TableStatus::InvalidContent,

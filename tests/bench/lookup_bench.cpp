@@ -1,7 +1,8 @@
 // Google Benchmark of the lookup query: one wheel (all slots, all quantities) with its prelookup, and two wheels
 // sharing one prelookup, linear / PCHIP, double / single precision. The table: CTAB_LOOKUP_BLOB (a blob file,
 // e.g. `ctab export build/default_table.h5 -o build/default_table.blob`), else a synthetic table of the default
-// table's shape (241 lateral shifts, 3 slots). Random query points, cycled; time per query of one wheel.
+// table's shape (241 lateral shifts, 3 slots). The *_adaptive cases: the synthetic table on an adaptive axis of 593
+// nodes spaced 1 um .. 0.5 mm (test::adaptive_options). Random query points, cycled; time per query of one wheel.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -17,12 +18,13 @@ namespace {
 using ctab::lookup::LoadOptions;
 using ctab::lookup::Table;
 
-Table load(const LoadOptions& options) {
+Table load(const LoadOptions& options, bool adaptive = false) {
   Table table;
   const char* blob = std::getenv("CTAB_LOOKUP_BLOB");
   const ctab::lookup::LoadResult result =
-      blob ? ctab::lookup::open_blob_file(blob, options, table)
-           : table.load(ctab::lookup::test::make_synthetic({.dy_step_m = 0.1e-3, .strip_samples = 32}), options);
+      blob && !adaptive ? ctab::lookup::open_blob_file(blob, options, table)
+      : adaptive        ? table.load(ctab::lookup::test::make_synthetic(ctab::lookup::test::adaptive_options()), options)
+                        : table.load(ctab::lookup::test::make_synthetic({.dy_step_m = 0.1e-3, .strip_samples = 32}), options);
   if (!result.ok()) std::abort();
   return table;
 }
@@ -39,8 +41,8 @@ std::vector<double> random_dy(const Table& table, bool hot = false) {
   return dy;
 }
 
-void query_one_wheel(benchmark::State& state, LoadOptions options, bool hot) {
-  const Table table = load(options);
+void query_one_wheel(benchmark::State& state, LoadOptions options, bool hot, bool adaptive = false) {
+  const Table table = load(options, adaptive);
   const std::vector<double> dy = random_dy(table, hot);
   const double second = table.second_axis().front();
   ctab_result r;
@@ -81,6 +83,9 @@ BENCHMARK_CAPTURE(query_one_wheel, linear_single, LoadOptions{CTAB_LINEAR, true}
 BENCHMARK_CAPTURE(query_one_wheel, pchip_double, LoadOptions{CTAB_PCHIP, false}, false);
 BENCHMARK_CAPTURE(query_one_wheel, linear_double_hot, LoadOptions{CTAB_LINEAR, false}, true);
 BENCHMARK_CAPTURE(query_one_wheel, pchip_double_hot, LoadOptions{CTAB_PCHIP, false}, true);
+BENCHMARK_CAPTURE(query_one_wheel, linear_double_adaptive, LoadOptions{CTAB_LINEAR, false}, false, true);
+BENCHMARK_CAPTURE(query_one_wheel, linear_single_adaptive, LoadOptions{CTAB_LINEAR, true}, false, true);
+BENCHMARK_CAPTURE(query_one_wheel, pchip_double_adaptive, LoadOptions{CTAB_PCHIP, false}, false, true);
 BENCHMARK_CAPTURE(query_two_wheels, linear_double, LoadOptions{CTAB_LINEAR, false});
 BENCHMARK_CAPTURE(query_two_wheels, pchip_double, LoadOptions{CTAB_PCHIP, false});
 

@@ -64,6 +64,48 @@ TEST(LookupHdf5, Hdf5BlobAndCHeaderPathsGiveBitIdenticalAnswers) {
   EXPECT_EQ(ctab_table_open_hdf5(path.c_str(), nullptr, &table), CTAB_ERR_CANNOT_OPEN);
 }
 
+// Located jumps (1 um cells on an adaptive axis, at different dy per load row) pass through HDF5 to the lookup: the
+// axis and the jumps read back as written, and a query between the rows takes the load-interpolated side.
+TEST(LookupHdf5, LocatedJumpsSurviveTheHdf5Path) {
+  const TableData located = test::make_located();
+  tables::Table t;
+  t.lateral_displacement_m = located.dy_m;
+  t.second_axis = located.second;
+  t.second_axis_name = "vertical_load_N";
+  t.second_axis_units = "N";
+  t.strip_samples = located.strip_samples;
+  t.allocate();
+  for (std::size_t p = 0; p < located.present.size(); ++p) {
+    t.patch.present[p] = located.present[p];
+    t.patch.normal_force_N[p] = located.quantities[p * kQuantities + CTAB_NORMAL_FORCE_N];
+    t.patch.y_rail_m[p] = located.quantities[p * kQuantities + CTAB_Y_RAIL_M];
+    for (auto* positive : {&t.patch.force_vertical_N, &t.patch.area_m2, &t.patch.max_pressure_Pa,
+                           &t.patch.rolling_radius_m, &t.patch.semi_axis_a_m, &t.patch.semi_axis_b_m})
+      (*positive)[p] = located.present[p] ? 1.0 : 0.0;  // the reader's checks of a present patch
+  }
+  for (const Jump& j : located.jumps)
+    t.jumps.push_back({j.i_second, j.wheel, j.slot, j.i_dy, static_cast<tables::JumpKind>(j.kind)});
+  const std::string path = testing::TempDir() + "located_jumps.h5";
+  ASSERT_TRUE(tables::write_table(t, path).ok());
+  TableData back;
+  const LoadResult read = read_hdf5(path, back);
+  std::remove(path.c_str());
+  ASSERT_TRUE(read.ok()) << read.message;
+  EXPECT_EQ(back.dy_m, located.dy_m);
+  ASSERT_EQ(back.jumps.size(), located.jumps.size());
+  Table table;
+  ASSERT_TRUE(table.load(back, {}).ok());
+  EXPECT_EQ(table.jump_bands(), 10u);
+  // The flange (slot 1) appears at 1.234 mm at 60 kN and at 2.071 mm at 80 kN: at 1.5 mm it is there up to 66.36 kN.
+  for (const auto& [second, present] : {std::pair{66e3, 1}, std::pair{66.7e3, 0}}) {
+    ctab_location where;
+    table.prelookup(1.5e-3, second, where);
+    ctab_result r;
+    table.query(where, 0, r);
+    EXPECT_EQ(r.patch[1].present, present) << second;
+  }
+}
+
 TEST(LookupHdf5, ConversionRefusesAnUnknownSecondAxis) {
   tables::Table t;
   t.lateral_displacement_m = {0.0, 1e-3};

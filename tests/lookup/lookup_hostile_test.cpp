@@ -126,10 +126,11 @@ TEST(LookupHostile, ValuesBeyondWhatInterpolationHoldsAreRefusedAtLoad) {
     }
     EXPECT_EQ(blob_status(write_blob(data, false)), CTAB_ERR_CONTENT);
   }
-  // Within kMaxTableValue but changing over one narrow cell: the PCHIP slopes would overflow a cubic.
+  // Within kMaxTableValue but changing over the narrowest cells (tables::kMinDyStep) of an axis whose last cell is
+  // wide: a PCHIP slope times that width would overflow a cubic.
   TableData steep = test::make_synthetic();
   for (std::size_t i = 0; i < steep.n_dy(); ++i) {
-    steep.dy_m[i] = 1e-300 * static_cast<double>(i);
+    steep.dy_m[i] = i + 1 < steep.n_dy() ? 1e-7 * static_cast<double>(i) : 1e3;
     for (std::size_t w = 0; w < kWheels; ++w)
       steep.quantities[steep.patch_index(i, 0, w, 0) * kQuantities + CTAB_APPROACH_M] = i % 2 ? 1e300 : -1e300;
   }
@@ -137,7 +138,7 @@ TEST(LookupHostile, ValuesBeyondWhatInterpolationHoldsAreRefusedAtLoad) {
   EXPECT_EQ(pchip.load(steep, {CTAB_PCHIP, false}).status, CTAB_ERR_CONTENT);
   ASSERT_TRUE(linear.load(steep, {}).ok()) << "linear blends stay within the values";
   ctab_location where;
-  linear.prelookup(3.3e-300, 0.0, where);
+  linear.prelookup(3.3e-7, 0.0, where);
   ctab_result r;
   std::memset(&r, 0, sizeof r);  // slots beyond the table's are not written
   linear.query(where, 0, r);

@@ -118,12 +118,19 @@ TEST(LookupQuery, SecondAxisBlendsRowsOnlyWhereBothHaveThePatch) {
   ASSERT_EQ(r.status, CTAB_OK);
   EXPECT_NEAR(r.patch[0].q[CTAB_AREA_M2], synthetic_value(3, 0, 0, 1.23e-3, 71e3), 1e-9);
   EXPECT_NEAR(r.second, 71e3, 0.0);
-  // At dy = 7.2 mm the flange exists in row 0 (from 6.5 mm) but not in row 1 (from 7.5 mm): the nearer row wins.
+  // The flange appears in row 0 (60 kN) in the cell 6-7 mm and in row 1 (80 kN) in the cell 7-8 mm: between the
+  // rows it appears at the cells' midpoints interpolated in load (6.5 mm + 1 mm x g). At 69 kN (g = 0.45) that is
+  // 6.95 mm: at 7.2 mm the flange is there, row 1 (without it at 7.2 mm) giving its value at its cell's far end.
   const ctab_result near0 = query(table, 7.2e-3, 69e3, 0), near1 = query(table, 7.2e-3, 71e3, 0);
   EXPECT_EQ(near0.patch[1].present, 1);
-  EXPECT_NEAR(near0.patch[1].q[CTAB_NORMAL_FORCE_N], synthetic_value(0, 1, 0, 7.2e-3, 60e3), 1e-9);
-  EXPECT_EQ(near1.patch[1].present, 0);
-  EXPECT_EQ(near1.patch[1].q[CTAB_NORMAL_FORCE_N], 0.0);
+  EXPECT_NEAR(near0.patch[1].q[CTAB_NORMAL_FORCE_N],
+              0.55 * synthetic_value(0, 1, 0, 7.2e-3, 60e3) + 0.45 * synthetic_value(0, 1, 0, 8e-3, 80e3), 1e-9);
+  EXPECT_EQ(near1.patch[1].present, 1) << "at 71 kN the flange appears at 7.05 mm";
+  // At 6.9 mm and 71 kN the query lies before the interpolated jump: no flange, though row 0 has it there.
+  const ctab_result before = query(table, 6.9e-3, 71e3, 0);
+  EXPECT_EQ(before.patch[1].present, 0);
+  EXPECT_EQ(before.patch[1].q[CTAB_NORMAL_FORCE_N], 0.0);
+  EXPECT_EQ(query(table, 6.9e-3, 60e3, 0).patch[1].present, 1) << "row 0 alone: past its midpoint";
 }
 
 TEST(LookupQuery, PchipDoesNotOvershootAStep) {

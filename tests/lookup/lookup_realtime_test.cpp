@@ -104,6 +104,32 @@ TEST(LookupRealtime, CountingAllocatorSeesLoadsButNoQueries) {
   ctab_table_close(table);
 }
 
+// Located jumps on an adaptive axis: the index search and the jump bands between rows allocate nothing either.
+TEST(LookupRealtime, LocatedJumpsAllocateNothing) {
+  const std::vector<unsigned char> blob = write_blob(test::make_located(), false);
+  for (const ctab_interpolation interpolation : {CTAB_LINEAR, CTAB_PCHIP}) {
+    const ctab_open_options options{interpolation, 0};
+    ctab_table* table = nullptr;
+    ASSERT_EQ(ctab_table_open_memory(blob.data(), blob.size(), &options, &table), CTAB_OK);
+    std::vector<double> dys(4000), loads(4000);
+    std::mt19937_64 random(9);
+    std::uniform_real_distribution<double> dy(-3.5e-3, 2.5e-3), load(55e3, 105e3);
+    for (std::size_t i = 0; i < dys.size(); ++i) dys[i] = dy(random), loads[i] = load(random);
+    ctab_result result;
+    ctab_location where;
+    double a[4];
+    std::uint32_t count = 0;
+    const long before = g_allocations.load();
+    for (std::size_t i = 0; i < dys.size(); ++i) {
+      ctab_query(table, dys[i], loads[i], static_cast<std::int32_t>(i % 2), &result);
+      ctab_prelookup(table, dys[i], loads[i], &where);
+      ctab_strip_profile(table, &where, 0, 1, nullptr, a, nullptr, 4, &count);
+    }
+    EXPECT_EQ(g_allocations.load(), before) << "a query allocated";
+    ctab_table_close(table);
+  }
+}
+
 TEST(LookupRealtime, ConcurrentQueriesEqualSequentialOnes) {
   for (const bool single : {false, true}) {
     ctab_table* table = open_synthetic(CTAB_LINEAR, single, 3);

@@ -112,9 +112,9 @@ TEST(LookupStatus, BadTablesAreRefusedWithTheirStatus) {
   data.dy_m[5] = data.dy_m[4];
   EXPECT_EQ(refused(data), CTAB_ERR_AXES) << "dy not strictly increasing";
   data = test::make_synthetic();
-  data.dy_m[5] = data.dy_m[4] + 1e-3 / 65.0;  // a step below 1/64 of the mean step (1 mm)
-  EXPECT_EQ(refused(data), CTAB_ERR_AXES) << "dy refined beyond kMaxDyRefinement";
-  data.dy_m[5] = data.dy_m[4] + 1e-3 / 60.0;  // within it: a refined axis loads
+  data.dy_m[5] = data.dy_m[4] + 0.5e-7;  // a step below tables::kMinDyStep (0.1 um)
+  EXPECT_EQ(refused(data), CTAB_ERR_AXES) << "dy step below kMinDyStep";
+  data.dy_m[5] = data.dy_m[4] + 1e-7;  // a located jump's cell: an adaptive axis loads
   Table refined;
   EXPECT_TRUE(refined.load(data, {}).ok());
   data = test::make_synthetic();

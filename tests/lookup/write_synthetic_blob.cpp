@@ -1,6 +1,7 @@
 // Test helper: writes a synthetic table blob (flange jump at 6.5 mm, 3 loads) and the C library's answers to a
 // fixed list of queries (raw ctab_result records), for the Python wrapper test and the HIL loop smoke test.
 //   lookup_write_synthetic_blob OUT.blob OUT.results [OUT.h]   (OUT.h: the blob as a C header, ctab export's format)
+//   lookup_write_synthetic_blob --adaptive OUT.blob   (the adaptive axis of test::adaptive_options, for ctab bench)
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -9,25 +10,33 @@
 #include "ctab/lookup/blob.hpp"
 #include "synthetic_table.hpp"
 
+namespace {
+
+bool write_file(const char* path, const std::vector<unsigned char>& bytes) {
+  std::FILE* out = std::fopen(path, "wb");
+  return out != nullptr && std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size() && std::fclose(out) == 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  using namespace ctab::lookup;
+  if (argc == 3 && std::strcmp(argv[1], "--adaptive") == 0)
+    return write_file(argv[2], write_blob(test::make_synthetic(test::adaptive_options()), false)) ? 0 : 1;
   if (argc != 3 && argc != 4) {
     std::fprintf(stderr, "usage: lookup_write_synthetic_blob OUT.blob OUT.results [OUT.h]\n");
     return 2;
   }
-  using namespace ctab::lookup;
   const std::vector<unsigned char> blob = write_blob(test::make_synthetic({.n_second = 3, .failed_case = true}), false);
-  std::FILE* out = std::fopen(argv[1], "wb");
-  if (out == nullptr || std::fwrite(blob.data(), 1, blob.size(), out) != blob.size() || std::fclose(out) != 0) return 1;
+  if (!write_file(argv[1], blob)) return 1;
   if (argc == 4) {
     const std::string header = blob_c_header(blob, "ctab_synthetic_blob");
-    out = std::fopen(argv[3], "wb");
-    if (out == nullptr || std::fwrite(header.data(), 1, header.size(), out) != header.size() || std::fclose(out) != 0)
-      return 1;
+    if (!write_file(argv[3], std::vector<unsigned char>(header.begin(), header.end()))) return 1;
   }
   ctab_table* table = nullptr;
   if (ctab_table_open_memory(blob.data(), blob.size(), nullptr, &table) != CTAB_OK) return 1;
   // The queries (same list in lookup/python/tests/check_wrapper.py): dy from -13 to 13 mm, loads, both wheels.
-  out = std::fopen(argv[2], "wb");
+  std::FILE* out = std::fopen(argv[2], "wb");
   if (out == nullptr) return 1;
   for (int i = 0; i <= 260; ++i)
     for (int k = 0; k < 3; ++k)

@@ -347,14 +347,17 @@ TEST(TableFormat, CorruptContentsAreRejectedWithFileDatasetAndIndex) {
                  TableStatus::InvalidContent, {"/jumps[0]"});
 }
 
-// The dy axis may be refined locally (steps down to 1/64 of its mean step), never repeat or go backwards.
+// The dy axis may be adaptive (steps down to tables::kMinDyStep = 0.1 um, a located jump's cell), never repeat or go
+// backwards.
 TEST(TableFormat, RefinedDyAxisReadsAndBadOnesAreRejected) {
-  const double refined = 1.5e-3, repeated = 1e-3, too_fine = 1.01e-3;  // dy[4] of -2 ... 3 mm in 1 mm steps
+  // dy[4] of -2 ... 3 mm in 1 mm steps
+  const double refined = 1.5e-3, located = 1e-3 + 1e-7, repeated = 1e-3, too_fine = 1e-3 + 0.5e-7;
   EXPECT_TRUE(read_edited("refined.h5", [&](hid_t f) { poke(f, "/axes/lateral_displacement_m", 4, &refined); }).ok());
+  EXPECT_TRUE(read_edited("located.h5", [&](hid_t f) { poke(f, "/axes/lateral_displacement_m", 4, &located); }).ok());
   expect_failure(read_edited("repeated.h5", [&](hid_t f) { poke(f, "/axes/lateral_displacement_m", 4, &repeated); }),
                  TableStatus::InvalidContent, {"/axes/lateral_displacement_m[4]", "strictly increasing"});
   expect_failure(read_edited("too_fine.h5", [&](hid_t f) { poke(f, "/axes/lateral_displacement_m", 4, &too_fine); }),
-                 TableStatus::InvalidContent, {"/axes/lateral_displacement_m[4]", "finer than 1/64"});
+                 TableStatus::InvalidContent, {"/axes/lateral_displacement_m[4]", "finer than 1e-7 m"});
 }
 
 TEST(TableFormat, BadAttributesAreRejectedBeforeAllocating) {

@@ -293,7 +293,7 @@ std::string metres_text(double value) { return number_text(value) + " m"; }
 
 // [axes] lateral_refinement_m: zones {start, stop, step} of finer steps whose nodes join the dy axis (where the
 // contact changes fast: the flange climb, two-point contact). A node within 1e-9 of a step of one already there is
-// that node (the coarse axis keeps its values); no step may end finer than tables::kMaxDyRefinement allows.
+// that node (the coarse axis keeps its values); no step may be finer than tables::kMinDyStep.
 std::vector<double> refined_axis(const Reader& r, const toml::node& node, const std::vector<double>& axis) {
   const std::string key = "axes.lateral_refinement_m";
   const toml::array* zones = node.as_array();
@@ -335,13 +335,11 @@ std::vector<double> refined_axis(const Reader& r, const toml::node& node, const 
     merged[n - 1 - i] = half;
   }
   if (symmetric && merged.size() % 2 == 1) merged[merged.size() / 2] = 0.0;
-  const double mean_step = (merged.back() - merged.front()) / static_cast<double>(merged.size() - 1);
   for (std::size_t i = 1; i < merged.size(); ++i)
-    if (merged[i] - merged[i - 1] < mean_step / tables::kMaxDyRefinement)
+    if (!tables::dy_step_allowed(merged[i] - merged[i - 1]))
       r.fail(node, key,
              "a step of " + metres_text(merged[i] - merged[i - 1]) + " at dy " + metres_text(merged[i - 1]) +
-                 " is finer than 1/" + std::to_string(static_cast<int>(tables::kMaxDyRefinement)) +
-                 " of the refined axis's mean step (" + metres_text(mean_step) + ")");
+                 " is finer than " + metres_text(tables::kMinDyStep) + " (tables::kMinDyStep)");
   return merged;
 }
 

@@ -21,6 +21,16 @@ enum class CellRule : std::uint8_t {
   UpperOnly = 3,    //!< the lower case failed: always the upper neighbour
 };
 
+//! A jump of one wheel's slot that rows i_second and i_second + 1 of the second axis place in different dy cells
+//! (cell_lo in the lower row, cell_hi in the upper one; positions x_lo, x_hi the cells' midpoints [m]). Between the
+//! rows the jump lies at the position interpolated in the second axis: a query takes the side of it that its dy is
+//! on, from each row (a row whose own jump lies on the other side of the query gives its one-sided value at its
+//! jump cell's end on the query's side).
+struct JumpBand {
+  double x_lo = 0.0, x_hi = 0.0;
+  std::uint32_t cell_lo = 0, cell_hi = 0;
+};
+
 struct LoadOptions {
   ctab_interpolation interpolation = CTAB_LINEAR;
   bool single_precision = false;
@@ -55,8 +65,13 @@ class Table {
   //! How slot `slot` is blended in the dy cell (i_dy, i_dy + 1).
   [[nodiscard]] CellRule rule(std::size_t i_dy, std::size_t i_second, std::size_t wheel,
                               std::size_t slot) const noexcept {
-    return static_cast<CellRule>(static_cast<int>(field(case_(i_dy, i_second, wheel), off_rule_ + slot)));
+    return static_cast<CellRule>(static_cast<std::uint32_t>(field(case_(i_dy, i_second, wheel), off_rule_ + slot)) % 4);
   }
+  //! The jump bands of the table (see JumpBand; band 0 is none).
+  [[nodiscard]] std::size_t jump_bands() const noexcept { return bands_.empty() ? 0 : bands_.size() - 1; }
+  //! Candidates of the bounded search that prelookup runs on an adaptive dy axis (0 on a uniform one): it takes
+  //! ceil(log2) of this many steps.
+  [[nodiscard]] std::uint32_t dy_search_length() const noexcept { return dy_search_length_; }
   //! Bytes held by this table (all arrays).
   [[nodiscard]] std::size_t memory_bytes() const noexcept;
 
@@ -73,8 +88,9 @@ class Table {
   LoadResult build(const TableData& data, TableData* consumed, const LoadOptions& options);
   //! The records (and with PCHIP the slopes) in T; false when a slope would overflow.
   template <typename T, typename Storage>
-  bool build_records(const TableData& data, const std::vector<double>& width, const LoadOptions& options,
-                     Storage& records, Storage& slopes);
+  bool build_records(const TableData& data, const std::vector<double>& width,
+                     const std::vector<std::uint32_t>& band_of_patch, const LoadOptions& options, Storage& records,
+                     Storage& slopes);
   //! Fraction in the dy cell, the nearest-neighbour step and the Hermite basis (slope terms times the cell's width).
   struct DyBasis {
     double f, step, h00, h01, h10, h11;
@@ -85,6 +101,17 @@ class Table {
   template <typename T, bool kCubic>
   double dy_slot(const T* lo, const T* hi, const T* slope_lo, const T* slope_hi, std::size_t slot, const DyBasis& basis,
                  double* v) const noexcept;
+  //! For slot `slot` at `where` in a cell of jump band `band`: per row (lower, upper) the dy node whose values the row
+  //! gives instead of its own blend, or kNoNode where the row's own side of its jump is the query's.
+  void band_nodes(const ctab_location& where, std::uint32_t band, std::uint32_t node[2]) const noexcept;
+  static constexpr std::uint32_t kNoNode = 0xFFFFFFFFu;
+  //! The rows' values and presence of slot `slot` in jump band `band`: replaced by the node band_nodes names.
+  template <typename T>
+  void band_rows(const ctab_location& where, std::uint32_t wheel, std::size_t slot, std::uint32_t band, double* v0,
+                 double& p0, double* v1, double& p1) const noexcept;
+  //! One slot's values (into v) and presence at one case.
+  template <typename T>
+  double node_slot(std::size_t c, std::size_t slot, double* v) const noexcept;
   template <typename T, bool kCubic>
   void wheelset(const ctab_location& where, std::uint32_t wheel, const DyBasis& basis, ctab_result& out) const noexcept;
   //! True when every field of a caller's location is one this table's prelookup can give (status ok or clamped,
@@ -106,18 +133,21 @@ class Table {
   std::uint32_t n_dy_ = 0;
   std::uint32_t n_slots_ = 0;
   std::uint32_t strip_samples_ = 0;
-  // The dy axis and its bounded-time search: arithmetic on a uniform axis; on a refined one dy_index_[k] is the
-  // cell holding dy_.front() + k x the smallest step, so that a point's cell is that entry's or a neighbour.
+  // The dy axis and its bounded-time search: arithmetic on a uniform axis; on an adaptive one dy_index_[k] is the
+  // cell holding dy_.front() + k x the index step (an index of bounded size), and a point's cell lies among the
+  // dy_search_length_ cells from its entry's (less one): a binary search of a fixed number of steps finds it.
   std::vector<double> dy_, cell_width_, inv_cell_width_;
   std::vector<std::uint32_t> dy_index_;
   double inv_index_step_ = 0.0, inv_mean_step_ = 0.0;
+  std::uint32_t dy_search_length_ = 0;
   bool uniform_dy_ = true;
+  std::vector<JumpBand> bands_;  //!< [0] unused: band 0 is none
   std::vector<double> second_;
   SecondAxis second_kind_ = SecondAxis::VerticalLoad;
   ctab_interpolation interpolation_ = CTAB_LINEAR;
   // One record per case (i_dy, i_second, wheel), `stride_` values long and 64-byte aligned, in double or (single
   // precision) float: n_slots x kQuantities values, then per slot the presence (0/1) and the rule of the dy cell
-  // starting at this case (CellRule), then the case status, the roll and delta r. With PCHIP, the dy-slopes
+  // starting at this case (CellRule + 4 x the slot's jump band between this case's row and the next), then the case status, the roll and delta r. With PCHIP, the dy-slopes
   // [unit/m] of the values, roll and delta r in records of the same layout.
   std::size_t stride_ = 0, off_present_ = 0, off_rule_ = 0, off_status_ = 0, off_roll_ = 0;
   //! Values starting at a 64-byte boundary inside their vector (`skip` elements in).

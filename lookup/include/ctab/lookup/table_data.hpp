@@ -16,10 +16,6 @@ inline constexpr std::size_t kMaxSlots = CTAB_MAX_SLOTS;
 inline constexpr std::size_t kQuantities = CTAB_QUANTITIES;
 inline constexpr std::size_t kMaxStripSamples = 4096;
 inline constexpr int kSchemaVersion = 2;  //!< the table schema this core understands
-//! The dy axis may be refined locally (finer steps where the contact changes fast), its smallest step down to
-//! 1/kMaxDyRefinement of its mean step: the prelookup's index (one entry per smallest step) then holds at most
-//! kMaxDyRefinement entries per node. The same bound as tables::kMaxDyRefinement.
-inline constexpr double kMaxDyRefinement = 64.0;
 
 //! Largest magnitude of a tabulated value: any blend of a few such values (linear, PCHIP, second axis) stays finite.
 //! Physical tables hold nothing near it (pressures about 1e9 Pa).
@@ -42,7 +38,8 @@ struct Jump {
 };
 
 struct TableData {
-  std::vector<double> dy_m;    //!< lateral displacement, strictly increasing (n_dy >= 2), uniform or refined [m]
+  std::vector<double> dy_m;    //!< lateral displacement, strictly increasing (n_dy >= 2), uniform or adaptive, steps
+                               //!< >= tables::kMinDyStep [m]
   std::vector<double> second;  //!< second axis, strictly increasing (n_second >= 1)
   SecondAxis second_axis = SecondAxis::VerticalLoad;
   std::size_t n_slots = 3;                          //!< 1..kMaxSlots

@@ -16,6 +16,13 @@ inline constexpr double kMaxTableBytes = 2.0 * 1024.0 * 1024.0 * 1024.0;
 inline constexpr std::uint64_t kMaxAxisLength = std::uint64_t{1} << 20;
 //! Values stored per patch besides its strip profiles: 18 quantities, presence and the per-wheel values' share.
 inline constexpr double kValuesPerPatch = 20.0;
+//! Smallest step of the dy axis [m]: a located jump's cell may be this narrow (the generator brackets a jump to
+//! 1 um or better). The axis is otherwise free (adaptive: steps from this to millimetres in one axis); the lookup's
+//! prelookup stays bounded-time on any such axis (lookup/README.md, "Prelookup").
+inline constexpr double kMinDyStep = 1e-7;
+//! True when `step` (the difference of two neighbouring dy values) is at least kMinDyStep, to a relative 1e-9 so
+//! that a 0.1 um cell whose ends were rounded to doubles still counts.
+constexpr bool dy_step_allowed(double step) noexcept { return step >= kMinDyStep * (1.0 - 1e-9); }
 //! Wheels per case (right, left).
 inline constexpr double kTableWheelCount = 2.0;
 

@@ -26,9 +26,6 @@ inline constexpr std::size_t kWheels = 2;              //!< index 0: right wheel
 inline constexpr std::size_t kDefaultSlots = 3;        //!< patch slots unless the config asks for more
 inline constexpr std::size_t kMaxSlots = 16;           //!< most patch slots a table may have
 inline constexpr std::size_t kMaxStripSamples = 4096;  //!< most strip-profile samples per patch
-//! The dy axis is uniform or refined locally (finer steps where the contact changes fast); no step may be finer
-//! than 1/kMaxDyRefinement of its mean step (the lookup's index holds one entry per smallest step).
-inline constexpr double kMaxDyRefinement = 64.0;
 
 //! How a patch changes between two neighbouring lateral shifts (a cell of the dy axis).
 enum class JumpKind : std::uint8_t {
