@@ -28,14 +28,10 @@ TableResult check_axes(const Table& t, const std::string& path) {
   for (std::size_t i = 1; i < dy.size(); ++i)
     if (!(dy[i] > dy[i - 1]))
       return {TableStatus::InvalidContent, axis + "[" + std::to_string(i) + "]: the axis must be strictly increasing"};
-  if (dy.size() >= 2) {
-    const double mean_step = (dy.back() - dy.front()) / static_cast<double>(dy.size() - 1);
-    for (std::size_t i = 1; i < dy.size(); ++i)
-      if (dy[i] - dy[i - 1] < mean_step / kMaxDyRefinement)
-        return {TableStatus::InvalidContent, axis + "[" + std::to_string(i) + "]: a step finer than 1/" +
-                                                 std::to_string(static_cast<int>(kMaxDyRefinement)) +
-                                                 " of the axis's mean step"};
-  }
+  for (std::size_t i = 1; i < dy.size(); ++i)
+    if (dy[i] - dy[i - 1] < kMinDyStep_m)
+      return {TableStatus::InvalidContent,
+              axis + "[" + std::to_string(i) + "]: a step finer than " + number_text(kMinDyStep_m) + " m"};
   for (std::size_t i = 0; i < t.second_axis.size(); ++i)
     if (!(t.second_axis[i] > 0.0) || (i > 0 && !(t.second_axis[i] > t.second_axis[i - 1])))
       return {TableStatus::InvalidContent,
@@ -72,6 +68,8 @@ TableResult check_field(const Field& f, const Table& t, const std::string& path)
   const std::vector<double>& v = *f.doubles;
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (!std::isfinite(v[i])) return invalid(path, f, shape, i, number_text(v[i]) + " (must be finite)");
+    if (f.extent == Extent::PerCell && !(v[i] >= 0.0 || v[i] == kCellNotMeasured))
+      return invalid(path, f, shape, i, number_text(v[i]) + " (must be >= 0, or -1: not measured)");
     if (!f.patch) continue;
     const bool here = present[slot_of(f, t, i)] != 0;
     if (!here && v[i] != 0.0) return invalid(path, f, shape, i, number_text(v[i]) + " in an empty slot (must be 0)");
