@@ -124,7 +124,7 @@ std::vector<Cell> refine(const Context& c, std::vector<Point>& points) {
     for (const auto& [a, b, parent_worst] : open) {
       const double low = points[a].dy_m, width = points[b].dy_m - low;
       const bool jump = any_discontinuous(c, points[a], points[b]);
-      if (width <= tables::kJumpCellWidth_m || (!jump && width < 3.0 * c.tolerance.min_step_m)) {
+      if (width <= tables::kJumpCellWidth_m || (!jump && width < c.tolerance.min_step_m)) {
         cells.push_back({a, b, unmeasured});
         continue;
       }
