@@ -31,7 +31,7 @@ TableResult check_axes(const Table& t, const std::string& path) {
   for (std::size_t i = 1; i < dy.size(); ++i)
     if (dy[i] - dy[i - 1] < kMinDyStep_m)
       return {TableStatus::InvalidContent,
-              axis + "[" + std::to_string(i) + "]: a step finer than " + number_text(kMinDyStep_m) + " m"};
+              axis + "[" + std::to_string(i) + "]: a step finer than 1e-07 m (kMinDyStep_m)"};
   for (std::size_t i = 0; i < t.second_axis.size(); ++i)
     if (!(t.second_axis[i] > 0.0) || (i > 0 && !(t.second_axis[i] > t.second_axis[i - 1])))
       return {TableStatus::InvalidContent,
