@@ -5,7 +5,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "ctab/sweep/cell_error.hpp"
@@ -20,12 +22,16 @@ namespace {
 // chase it. A smooth function's error falls to 1/9 per split, a kink's to 1/3. Chosen: 0.6.
 constexpr double kNoiseDecay = 0.6;
 
+// Smallest half width of a roll guess's first bracket [rad] (RollGuess::spread_rad).
+constexpr double kMinRollSpread_rad = 1e-6;
+
 // Two nodes closer than this are one (a mirrored node and its image from the other side) [m].
 constexpr double kSameNode_m = 1e-12;
 
 // One solved lateral shift: every load of every solved side (side * n_loads + load).
 struct Point {
   double dy_m = 0.0;
+  std::optional<RollGuess> guess;  // from the neighbours' rolls: a faster search, the same roll (rigid_wheelset_pose)
   CaseRoll roll;
   std::vector<CaseWheel> wheels;
   std::vector<WheelSample> samples;
@@ -46,26 +52,20 @@ struct Context {
   [[nodiscard]] std::size_t per_point() const noexcept { return plan.sides * loads(); }
 };
 
-// Solves points[first..] (their dy set): rolls, then every wheel solve, then the samples, each loop in parallel.
+// Solves points[first..] (their dy set), one task per point (its roll, every wheel solve, the samples: one barrier
+// per round), dynamically scheduled.
 void solve_points(const Context& c, std::vector<Point>& points, std::size_t first) {
-  const std::size_t n = points.size() - first, per_point = c.per_point(), loads = c.loads();
-  parallel_loop(n, c.plan.threads, true, [&](std::size_t k) {
+  const std::size_t per_point = c.per_point(), loads = c.loads();
+  std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(c.plan.threads));
+  parallel_loop(points.size() - first, c.plan.threads, true, [&](std::size_t k) {
     Point& p = points[first + k];
-    p.roll = solve_case_roll(c.setup, p.dy_m);
+    WheelContactWorkspace& workspace = workspaces[static_cast<std::size_t>(omp_get_thread_num())];
+    p.roll = solve_case_roll(c.setup, p.dy_m, p.guess ? &*p.guess : nullptr);
     p.wheels.resize(per_point);
     p.samples.resize(per_point);
-  });
-  std::vector<WheelContactWorkspace> workspaces(static_cast<std::size_t>(c.plan.threads));
-  parallel_loop(n * per_point, c.plan.threads, true, [&](std::size_t task) {
-    Point& p = points[first + task / per_point];
-    const std::size_t r = task % per_point;
-    p.wheels[r] = solve_case_wheel(c.setup, r / loads, p.dy_m, p.roll, c.plan.load_values[r % loads],
-                                   workspaces[static_cast<std::size_t>(omp_get_thread_num())]);
-  });
-  parallel_loop(n, c.plan.threads, false, [&](std::size_t k) {
-    Point& p = points[first + k];
     tables::Table scratch = c.scratch;
     for (std::size_t r = 0; r < per_point; ++r) {
+      p.wheels[r] = solve_case_wheel(c.setup, r / loads, p.dy_m, p.roll, c.plan.load_values[r % loads], workspace);
       store_case_wheel(scratch, c.setup, 0, r % loads, r / loads, p.wheels[r]);
       p.samples[r] = wheel_sample(scratch, 0, r % loads, r / loads);
     }
@@ -129,8 +129,10 @@ std::vector<Cell> refine(const Context& c, std::vector<Point>& points) {
         continue;
       }
       checked.push_back({a, b, parent_worst});
-      points.push_back({low + width / 3.0, {}, {}, {}});
-      points.push_back({low + 2.0 * width / 3.0, {}, {}, {}});
+      const double roll_a = points[a].roll.roll_rad, roll_b = points[b].roll.roll_rad;
+      const double spread = std::max(std::abs(roll_b - roll_a), kMinRollSpread_rad);
+      points.push_back({low + width / 3.0, RollGuess{roll_a + (roll_b - roll_a) / 3.0, spread}, {}, {}, {}});
+      points.push_back({low + 2.0 * width / 3.0, RollGuess{roll_a + 2.0 * (roll_b - roll_a) / 3.0, spread}, {}, {}, {}});
     }
     solve_points(c, points, first);
     open.clear();
@@ -188,9 +190,12 @@ std::vector<std::size_t> mirror_closed(const Context& c, std::vector<Point>& poi
   std::vector<std::size_t> closed;
   for (const double dy : all) {
     std::size_t node = node_at(points, nodes, dy);
-    if (node >= first) {  // not a node yet
+    if (node >= first) {  // not a node yet: its image's roll mirrored is the guess
+      const std::size_t image = node_at(points, nodes, -dy);
+      std::optional<RollGuess> guess;
+      if (image < first) guess = RollGuess{-points[image].roll.roll_rad, kMinRollSpread_rad};
       node = points.size();
-      points.push_back({dy, {}, {}, {}});
+      points.push_back({dy, guess, {}, {}, {}});
     }
     closed.push_back(node);
   }
@@ -238,7 +243,7 @@ tables::Table scratch_table(const TableConfig& config, const SweepPlan& plan) {
 AdaptiveAxis decide_adaptive_axis(const TableConfig& config, const SweepSetup& setup, const SweepPlan& plan) {
   const Context c{setup, plan, *config.axis_tolerance, scratch_table(config, plan)};
   std::vector<Point> points;
-  for (const double dy : plan.dy_m) points.push_back({dy, {}, {}, {}});
+  for (const double dy : plan.dy_m) points.push_back({dy, std::nullopt, {}, {}, {}});
   solve_points(c, points, 0);
   const std::vector<Cell> cells = refine(c, points);
   std::vector<std::size_t> nodes = nodes_of(cells);

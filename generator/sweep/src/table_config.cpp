@@ -48,7 +48,7 @@ surface = "conformal"    # contact surface: "conformal" (curved, CONTACT D=4) or
 warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; docs/performance.md)
 
 [axes]
-lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.3e-3 }  # with tolerance: the coarse axis
+lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.6e-3 }  # with tolerance: the coarse axis
 # the generator refines the dy axis until linear interpolation meets these (docs/method.md "Error-controlled axes")
 tolerance = { force_rel = 0.005, area_rel = 0.005, contact_point_m = 1e-5, lateral_force_rel = 0.005 }
 vertical_load_N = 78.5e3 # one value: fixed; a list or {start, stop, step}: a second axis
