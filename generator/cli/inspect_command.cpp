@@ -1,6 +1,7 @@
 // `ctab inspect FILE [--json]`: validate a table and print its schema, provenance, axes, statuses, patches per
 // slot and the contact jumps stored in the file.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -25,6 +26,61 @@ const char* jump_kind_name(tables::JumpKind kind) {
   return "unknown";
 }
 
+// An adaptive axis (a table with cell_error): the tolerance, the worst error measured per quantity, the cells over
+// the tolerance and not measured, and the nodes next to those of the uniform axis with the finest measured step
+// (the cells around a located jump are narrower, and not measured).
+nlohmann::ordered_json adaptive_axis_summary(const tables::Table& t) {
+  nlohmann::ordered_json out;
+  const auto& dy = t.lateral_displacement_m;
+  const std::size_t q_count = tables::kCellErrorQuantities, n_second = t.n_second();
+  std::vector<double> tolerance(q_count, 0.0), worst(q_count, 0.0);
+  for (std::size_t q = 0; q < q_count; ++q) {
+    const auto found = t.number_attributes.find(tables::kToleranceAttributes[q]);
+    tolerance[q] = found != t.number_attributes.end() ? found->second : 0.0;
+  }
+  std::size_t over = 0, unmeasured = 0;
+  double finest = dy.back() - dy.front();
+  for (std::size_t i = 0; i + 1 < dy.size(); ++i) {
+    for (std::size_t j = 0; j < n_second; ++j) {
+      const double* e = &t.cell_error[(i * n_second + j) * q_count];
+      if (e[0] == tables::kCellNotMeasured) {
+        ++unmeasured;
+        continue;
+      }
+      finest = std::min(finest, dy[i + 1] - dy[i]);
+      bool cell_over = false;
+      for (std::size_t q = 0; q < q_count; ++q) {
+        worst[q] = std::max(worst[q], e[q]);
+        cell_over = cell_over || e[q] > tolerance[q];
+      }
+      over += cell_over ? 1 : 0;
+    }
+  }
+  static const char* const names[] = {"force_rel", "area_rel", "contact_point_m", "lateral_force_rel"};
+  for (std::size_t q = 0; q < q_count; ++q) {
+    out["tolerance"][names[q]] = tolerance[q];
+    out["worst_measured"][names[q]] = worst[q];
+  }
+  out["cells_over_tolerance"] = over;
+  out["cells_not_measured"] = unmeasured;
+  out["nodes"] = dy.size();
+  out["finest_step_m"] = finest;
+  out["uniform_nodes_at_finest_step"] = static_cast<std::size_t>(std::ceil((dy.back() - dy.front()) / finest)) + 1;
+  return out;
+}
+
+void print_adaptive_axis(const nlohmann::ordered_json& a) {
+  std::printf("adaptive dy axis: %zu nodes (a uniform axis at its finest measured step, %g m: %zu)\n",
+              a["nodes"].get<std::size_t>(), a["finest_step_m"].get<double>(),
+              a["uniform_nodes_at_finest_step"].get<std::size_t>());
+  std::printf("  %-18s %12s %14s\n", "quantity", "tolerance", "worst measured");
+  for (const auto& [name, value] : a["tolerance"].items())
+    std::printf("  %-18s %12.4g %14.4g\n", name.c_str(), value.get<double>(),
+                a["worst_measured"][name].get<double>());
+  std::printf("  cells (x second-axis values) over the tolerance: %zu; not measured (jumps, cells beside them): %zu\n",
+              a["cells_over_tolerance"].get<std::size_t>(), a["cells_not_measured"].get<std::size_t>());
+}
+
 // Everything inspect reports, as JSON (the text output prints the same object).
 nlohmann::ordered_json summary(const tables::Table& t) {
   nlohmann::ordered_json out;
@@ -42,6 +98,7 @@ nlohmann::ordered_json summary(const tables::Table& t) {
                                            {"first", dy.front()},  {"last", dy.back()},
                                            {"step", largest_step}, {"smallest_step", smallest_step}};
   out["axes"]["second"] = {{"name", t.second_axis_name}, {"units", t.second_axis_units}, {"values", t.second_axis}};
+  if (!t.cell_error.empty()) out["adaptive_axis"] = adaptive_axis_summary(t);
   out["n_slots"] = t.n_slots;
   out["strip_samples"] = t.strip_samples;
   std::map<int, std::size_t> counts;
@@ -80,6 +137,7 @@ void print_text(const std::string& path, const nlohmann::ordered_json& s) {
   const auto& second = s["axes"]["second"];
   std::printf("      %s %zu value(s) in %s: %s\n", second["name"].get<std::string>().c_str(), second["values"].size(),
               second["units"].get<std::string>().c_str(), second["values"].dump().c_str());
+  if (s.contains("adaptive_axis")) print_adaptive_axis(s["adaptive_axis"]);
   std::printf("patch slots: %zu; strip profiles: %zu samples per patch\n", s["n_slots"].get<std::size_t>(),
               s["strip_samples"].get<std::size_t>());
   std::printf("status counts (case x wheel):");

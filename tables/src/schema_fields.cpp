@@ -66,6 +66,13 @@ std::vector<Field> schema_fields(Table& t) {
       f64("/wheels/strip_width_m", "m", "strip width of that solve (the least model's choice with method auto)",
           Extent::PerWheel, t.strip_width_m);
   width.optional = true;
+  Field cell_error =
+      f64("/axes/cell_error", "-",
+          "interpolation error measured per dy cell and second-axis value: relative patch normal force, relative "
+          "patch area, contact point [m], total lateral force / wheel load; -1 where not measured (jump cells)",
+          Extent::PerCell, t.cell_error);
+  cell_error.optional = true;
+  cell_error.empty_when_missing = true;
   return {
       f64("/axes/lateral_displacement_m", "m", "wheelset lateral shift dy, + moves the right flange towards its rail",
           Extent::DyAxis, t.lateral_displacement_m),
@@ -114,6 +121,7 @@ std::vector<Field> schema_fields(Table& t) {
       f64("/patches/strip_peak_pressure_Pa", "Pa",
           "strip peak pressure p0(s) on strip_samples points over [s_min, s_max]", Extent::PerSample,
           p.strip_peak_pressure_Pa, kNonNegative),
+      cell_error,
   };
 }
 
@@ -125,12 +133,14 @@ std::vector<hsize_t> shape_of(Extent extent, hsize_t n_dy, hsize_t n_second, hsi
     case Extent::PerWheel: return {n_dy, n_second, kWheels};
     case Extent::PerSlot: return {n_dy, n_second, kWheels, n_slots};
     case Extent::PerSample: return {n_dy, n_second, kWheels, n_slots, strip_samples};
+    case Extent::PerCell: return {n_dy > 0 ? n_dy - 1 : 0, n_second, kCellErrorQuantities};
   }
   return {};
 }
 
 std::string index_text(Extent extent, const std::vector<hsize_t>& shape, std::size_t flat) {
   static const char* const names[] = {"i_dy", "i_2", "wheel", "slot", "sample"};
+  static const char* const cell_names[] = {"i_cell", "i_2", "quantity"};
   std::vector<std::size_t> index(shape.size());
   for (std::size_t d = shape.size(); d-- > 0;) {
     index[d] = flat % shape[d];
@@ -139,7 +149,8 @@ std::string index_text(Extent extent, const std::vector<hsize_t>& shape, std::si
   std::string text;
   const std::size_t first = extent == Extent::SecondAxis ? 1 : 0;
   for (std::size_t d = 0; d < index.size(); ++d)
-    text += (d ? ", " : "") + std::string(names[d + first]) + "=" + std::to_string(index[d]);
+    text += (d ? ", " : "") + std::string(extent == Extent::PerCell ? cell_names[d] : names[d + first]) + "=" +
+            std::to_string(index[d]);
   return text;
 }
 

@@ -13,7 +13,8 @@ namespace ctab::tables::detail {
 enum class Element { Float64, Presence, Status, Int8 };
 
 //! Which axes a dataset spans.
-enum class Extent { DyAxis, SecondAxis, PerCase, PerWheel, PerSlot, PerSample };
+//! PerCell: (n_dy - 1, n_second, kCellErrorQuantities), the cells of the dy axis.
+enum class Extent { DyAxis, SecondAxis, PerCase, PerWheel, PerSlot, PerSample, PerCell };
 
 struct Field {
   const char* path;
@@ -29,6 +30,8 @@ struct Field {
   //! later; readers of older tables keep working).
   bool optional = false;
   double missing_value = 0.0;
+  //! Optional and kept empty where absent (not filled): neither allocated nor written while empty.
+  bool empty_when_missing = false;
   //! Constraint on present patches (PerSlot and PerSample patch quantities): 0 none, 1 >= 0, 2 > 0.
   int sign = 0;
   //! True for patch quantities (must be 0 where the slot is empty).

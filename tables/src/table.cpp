@@ -24,6 +24,10 @@ void Table::allocate() {
   const auto n_dy_ = static_cast<hsize_t>(n_dy()), n_second_ = static_cast<hsize_t>(n_second());
   for (const detail::Field& field : detail::schema_fields(*this)) {
     if (field.extent == detail::Extent::DyAxis || field.extent == detail::Extent::SecondAxis) continue;
+    if (field.empty_when_missing) {  // set by its producer only (the adaptive axis)
+      field.resize(0);
+      continue;
+    }
     std::size_t count = 1;
     for (const hsize_t d : detail::shape_of(field.extent, n_dy_, n_second_, n_slots, strip_samples)) count *= d;
     field.resize(count);

@@ -196,8 +196,16 @@ TableResult check_shapes(hid_t file, const std::string& path, Table& table) {
 TableResult read_arrays(hid_t file, const std::string& path, Table& table) {
   for (const detail::Field& f : detail::schema_fields(table)) {
     if (f.optional && H5Lexists(file, f.path, H5P_DEFAULT) <= 0) {
+      if (f.empty_when_missing) f.resize(0);
       f.fill_missing();
       continue;
+    }
+    if (f.empty_when_missing) {  // not allocated with the table: sized from its (checked) shape
+      std::size_t count = 1;
+      for (const hsize_t d : detail::shape_of(f.extent, table.n_dy(), table.n_second(), table.n_slots,
+                                              table.strip_samples))
+        count *= d;
+      f.resize(count);
     }
     const Handle dataset(H5Dopen2(file, f.path, H5P_DEFAULT), H5Dclose);
     // Enums (status, method): read with the file's own type (checked equal to ours), so unknown values arrive

@@ -68,6 +68,8 @@ TableResult check_field(const Field& f, const Table& t, const std::string& path)
   const std::vector<double>& v = *f.doubles;
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (!std::isfinite(v[i])) return invalid(path, f, shape, i, number_text(v[i]) + " (must be finite)");
+    if (f.extent == Extent::PerCell && !(v[i] >= 0.0 || v[i] == kCellNotMeasured))
+      return invalid(path, f, shape, i, number_text(v[i]) + " (must be >= 0, or -1: not measured)");
     if (!f.patch) continue;
     const bool here = present[slot_of(f, t, i)] != 0;
     if (!here && v[i] != 0.0) return invalid(path, f, shape, i, number_text(v[i]) + " in an empty slot (must be 0)");

@@ -85,6 +85,7 @@ class FilePlan {
   // The datasets of the table (the schema's arrays, then /jumps) and their chunks; an error message, or "".
   std::string plan() {
     for (const detail::Field& f : detail::schema_fields(table_)) {
+      if (f.empty_when_missing && f.size() == 0) continue;
       DatasetWrite write{
           f.path,
           detail::shape_of(f.extent, table_.n_dy(), table_.n_second(), table_.n_slots, table_.strip_samples),

@@ -480,3 +480,50 @@ TEST(TableFormat, TablesBeyondTheSizeLimitAreRefused) {
   expect_failure(written, TableStatus::WriteFailed, {"GiB in memory", "limit"});
   EXPECT_FALSE(std::filesystem::exists(temp_path("too_big.h5")));
 }
+
+// /axes/cell_error (an adaptive axis): kept bit for bit; a table without it (written by a fixed-axis generator, or
+// before the dataset existed) reads with an empty Table::cell_error; values below 0 other than -1 are refused.
+TEST(TableFormat, CellErrorRoundTripAndTablesWithoutIt) {
+  Table without;
+  const TableResult plain = read_table(good_file(), without);
+  ASSERT_TRUE(plain.ok()) << plain.message;
+  EXPECT_TRUE(without.cell_error.empty());
+
+  Table t = synthetic_table();
+  t.cell_error.resize((t.n_dy() - 1) * t.n_second() * kCellErrorQuantities);
+  for (std::size_t i = 0; i < t.cell_error.size(); ++i) t.cell_error[i] = 1e-4 * static_cast<double>(i);
+  t.cell_error[5] = kCellNotMeasured;
+  for (std::size_t q = 0; q < kCellErrorQuantities; ++q) t.number_attributes[kToleranceAttributes[q]] = 0.005;
+  const std::string path = temp_path("cell_error.h5");
+  ASSERT_TRUE(write_table(t, path).ok());
+  Table back;
+  const TableResult r = read_table(path, back);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_TRUE(bitwise_equal(back.cell_error, t.cell_error));
+  EXPECT_EQ(back.number_attributes, t.number_attributes);
+
+  t.cell_error[7] = -0.5;
+  const std::string bad = temp_path("cell_error_bad.h5");
+  ASSERT_TRUE(write_table(t, bad).ok());
+  Table refused;
+  expect_failure(read_table(bad, refused), TableStatus::InvalidContent, {"/axes/cell_error[", "not measured"});
+}
+
+// The located jumps of an adaptive axis: only in cells of at most kJumpCellWidth_m not measured; detect_jumps'
+// threshold rule for tables without cell_error.
+TEST(TableFormat, LocatedJumpsOnlyInNarrowUnmeasuredCells) {
+  Table t = synthetic_table();  // the flange patch appears between dy[2] and dy[3] (1 mm apart)
+  EXPECT_FALSE(table_jumps(t).empty());
+  t.cell_error.assign((t.n_dy() - 1) * t.n_second() * kCellErrorQuantities, 0.0);
+  EXPECT_TRUE(table_jumps(t).empty()) << "a 1 mm cell is never a located jump";
+  t.lateral_displacement_m = {-2e-3, -1e-3, 0.0, 0.5e-6, 2e-3, 3e-3};
+  for (std::size_t j = 0; j < t.n_second(); ++j)
+    for (std::size_t q = 0; q < kCellErrorQuantities; ++q)
+      t.cell_error[(2 * t.n_second() + j) * kCellErrorQuantities + q] = kCellNotMeasured;
+  const std::vector<Jump> jumps = table_jumps(t);
+  ASSERT_FALSE(jumps.empty());
+  for (const Jump& j : jumps) {
+    EXPECT_EQ(j.i_dy, 2u);
+    EXPECT_EQ(j.kind, JumpKind::Appears);
+  }
+}

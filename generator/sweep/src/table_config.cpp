@@ -13,6 +13,7 @@
 #include "ctab/io/profile_io.hpp"
 #include "ctab/profiles/builtin_profiles.hpp"
 #include "ctab/wheelrail/axis_range.hpp"
+#include "axis_tolerance_config.hpp"
 #include "toml_input.hpp"
 
 namespace ctab::gen {
@@ -47,10 +48,9 @@ surface = "conformal"    # contact surface: "conformal" (curved, CONTACT D=4) or
 warm_start = false       # true: start each solve from its neighbour in dy (faster fine sweeps; docs/performance.md)
 
 [axes]
-lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.1e-3 }
-# finer steps where the contact climbs from flange root to flank (the lookup interpolates there to 0.3 % in force)
-lateral_refinement_m = [ { start = -6.5e-3, stop = -6.1e-3, step = 0.025e-3 },
-                         { start = 6.1e-3, stop = 6.5e-3, step = 0.025e-3 } ]
+lateral_displacement_m = { start = -12e-3, stop = 12e-3, step = 0.6e-3 }  # with tolerance: the coarse axis
+# the generator refines the dy axis until linear interpolation meets these (docs/method.md "Error-controlled axes")
+tolerance = { force_rel = 0.005, area_rel = 0.005, contact_point_m = 1e-5, lateral_force_rel = 0.005 }
 vertical_load_N = 78.5e3 # one value: fixed; a list or {start, stop, step}: a second axis
                          # (or normal_load_N, or approach_m)
 
@@ -93,6 +93,8 @@ class Reader {
           fail(value, table_name + "." + std::string(key.str()), "unknown key");
     }
   }
+
+  [[nodiscard]] const toml::table& root() const noexcept { return root_; }
 
   const toml::node* find(const std::string& table, const std::string& key) const {
     const toml::node* t = root_.get(table);
@@ -350,6 +352,16 @@ void read_axes(const Reader& r, TableConfig& c) {
   c.lateral_displacement_m = r.axis(*dy, "axes.lateral_displacement_m");
   if (const toml::node* zones = r.find("axes", "lateral_refinement_m"))
     c.lateral_displacement_m = refined_axis(r, *zones, c.lateral_displacement_m);
+  c.axis_tolerance = detail::read_axis_tolerance(r.root(), c.source);
+  if (c.axis_tolerance) {
+    const toml::node& tolerance = *r.find("axes", "tolerance");
+    if (r.find("axes", "lateral_refinement_m"))
+      r.fail(tolerance, "axes.tolerance",
+             "the generator places the dy nodes itself: drop lateral_refinement_m (or the tolerance)");
+    if (c.warm_start)
+      r.fail(tolerance, "axes.tolerance",
+             "an adaptive axis solves every case cold: set solver.warm_start = false (or drop the tolerance)");
+  }
   const toml::node* load_node = nullptr;
   for (const auto& [kind, key] :
        {std::pair{LoadKind::VerticalForce, "vertical_load_N"}, std::pair{LoadKind::NormalForce, "normal_load_N"},
@@ -431,7 +443,9 @@ TableConfig parse_table_config(const std::string& text, const std::string& sourc
        {"solver",
         {"mode", "method", "tolerance", "strip_width_m", "reference_point", "reference_angle", "surface",
          "warm_start"}},
-       {"axes", {"lateral_displacement_m", "lateral_refinement_m", "vertical_load_N", "normal_load_N", "approach_m"}},
+       {"axes",
+        {"lateral_displacement_m", "lateral_refinement_m", "tolerance", "vertical_load_N", "normal_load_N",
+         "approach_m"}},
        {"output", {"strip_samples", "patch_slots", "compression"}}});
   TableConfig c;
   c.source = source;

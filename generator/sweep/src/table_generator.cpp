@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "adaptive_axis.hpp"
 #include "ctab/sweep/slot_assignment.hpp"
 #include "parallel_loop.hpp"
 #include "sweep_plan.hpp"
@@ -158,15 +159,56 @@ void assemble(tables::Table& table, const SweepSetup& setup, const SweepPlan& pl
 
 // ---- a sweep in parts ----
 
+// The set-up and plan of a config; with [axes] tolerance the axis is decided here (every node solved).
 struct TableSweep::Impl {
+  Impl(const TableConfig& c, const GeneratorInfo& i)
+      : config(c), setup(make_sweep_setup(c)), plan(detail::make_plan(c, i)), info(i) {
+    if (!config.axis_tolerance) return;
+    adaptive = detail::decide_adaptive_axis(config, setup, plan);
+    plan.dy_m = adaptive->dy_m;
+  }
   TableConfig config;
   SweepSetup setup;
   SweepPlan plan;
   GeneratorInfo info;
+  std::optional<detail::AdaptiveAxis> adaptive;  // [axes] tolerance: the decided axis and its solutions
 };
 
+namespace {
+
+// The adaptive axis's solutions of `rows`, in the layout of sweep().
+std::vector<CaseWheel> adaptive_results(const detail::AdaptiveAxis& axis, const SweepPlan& plan,
+                                        const std::vector<std::size_t>& rows, std::vector<CaseRoll>& rolls) {
+  const std::size_t n = axis.dy_m.size(), loads = plan.load_values.size();
+  std::vector<CaseWheel> results(plan.sides * rows.size() * loads);
+  rolls.clear();
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    rolls.push_back(axis.rolls[rows[k]]);
+    for (std::size_t side = 0; side < plan.sides; ++side)
+      for (std::size_t l = 0; l < loads; ++l)
+        results[(side * rows.size() + k) * loads + l] = axis.results[(side * n + rows[k]) * loads + l];
+  }
+  return results;
+}
+
+// The tolerance, the cell errors and the located jumps of an adaptive axis (after the slots are assigned).
+void add_adaptive_axis(tables::Table& table, const TableConfig& config, const detail::AdaptiveAxis& axis) {
+  const AxisTolerance& tolerance = *config.axis_tolerance;
+  const double values[tables::kCellErrorQuantities] = {tolerance.force_rel, tolerance.area_rel,
+                                                       tolerance.contact_point_m, tolerance.lateral_force_rel};
+  for (std::size_t q = 0; q < tables::kCellErrorQuantities; ++q)
+    table.number_attributes[tables::kToleranceAttributes[q]] = values[q];
+  table.number_attributes["tolerance_min_step_m"] = tolerance.min_step_m;
+  table.integer_attributes["axis_coarse_points"] = static_cast<std::int64_t>(axis.coarse_points);
+  table.integer_attributes["axis_solved_points"] = static_cast<std::int64_t>(axis.solved_points);
+  table.cell_error = axis.cell_error;
+  table.jumps = tables::table_jumps(table);
+}
+
+}  // namespace
+
 TableSweep::TableSweep(const TableConfig& config, const GeneratorInfo& info)
-    : impl_(std::make_unique<Impl>(Impl{config, make_sweep_setup(config), detail::make_plan(config, info), info})) {}
+    : impl_(std::make_unique<Impl>(config, info)) {}
 TableSweep::~TableSweep() = default;
 TableSweep::TableSweep(TableSweep&&) noexcept = default;
 
@@ -190,7 +232,9 @@ void TableSweep::solve_rows(const std::vector<std::size_t>& rows, tables::Table&
       if (!selected[n - 1 - i])
         throw std::invalid_argument("TableSweep::solve_rows: rows of a mirrored sweep must be mirror-closed");
   std::vector<CaseRoll> rolls;
-  const std::vector<CaseWheel> results = sweep(impl_->setup, impl_->plan, rows, rolls, progress);
+  const std::vector<CaseWheel> results = impl_->adaptive
+                                             ? adaptive_results(*impl_->adaptive, impl_->plan, rows, rolls)
+                                             : sweep(impl_->setup, impl_->plan, rows, rolls, progress);
   assemble(table, impl_->setup, impl_->plan, rows, rolls, results);
 }
 
@@ -198,6 +242,7 @@ void TableSweep::finish(tables::Table& table) const {
   assign_table_slots_along_dy(table, impl_->plan.threads);  // on all rows: slots follow the contacts along dy
   table.jumps = tables::detect_jumps(table);
   detail::add_provenance(table, impl_->config, impl_->setup, impl_->plan, impl_->info);
+  if (impl_->adaptive) add_adaptive_axis(table, impl_->config, *impl_->adaptive);
 }
 
 namespace {

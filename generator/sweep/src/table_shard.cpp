@@ -148,7 +148,7 @@ tables::Table merge_shards(std::vector<ShardFile> shards) {
   merged.integer_attributes.erase(kShardCount);
   merged.text_attributes.erase(kShardRows);
   assign_table_slots_along_dy(merged);  // as TableSweep::finish: on the whole table, never per shard
-  merged.jumps = tables::detect_jumps(merged);
+  merged.jumps = tables::table_jumps(merged);  // the located jumps of an adaptive axis
   return merged;
 }
 

@@ -27,6 +27,25 @@ inline constexpr std::size_t kDefaultSlots = 3;        //!< patch slots unless t
 inline constexpr std::size_t kMaxSlots = 16;           //!< most patch slots a table may have
 inline constexpr std::size_t kMaxStripSamples = 4096;  //!< most strip-profile samples per patch
 
+//! A located jump is a cell of at most kJumpCellWidth_m whose end nodes hold the one-sided limits; the generator
+//! brackets a jump to 0.1-1 um (the finest step readers and writers accept is kMinDyStep, limits.hpp).
+//! Widest cell that holds a located jump [m] (tables/README.md, "Adaptive axis and located jumps").
+inline constexpr double kJumpCellWidth_m = 1e-6;
+//! A contact point that moves by more than this between the two nodes of a located-jump cell is a `moves` jump [m]:
+//! the larger of 1 mm (the floor of detect_jumps, well above the solver's own steps of half a strip width in the
+//! contact point) and 10 contact-point tolerances.
+[[nodiscard]] constexpr double jump_move_threshold(double contact_point_tolerance_m) noexcept {
+  return contact_point_tolerance_m * 10.0 > 1e-3 ? contact_point_tolerance_m * 10.0 : 1e-3;
+}
+//! Quantities of Table::cell_error, in this order.
+inline constexpr std::size_t kCellErrorQuantities = 4;
+enum class CellErrorQuantity : std::uint8_t { ForceRel = 0, AreaRel = 1, ContactPoint_m = 2, LateralForceRel = 3 };
+//! The root number attributes with the tolerance an adaptive axis was refined to, in CellErrorQuantity order.
+inline constexpr const char* kToleranceAttributes[kCellErrorQuantities] = {
+    "tolerance_force_rel", "tolerance_area_rel", "tolerance_contact_point_m", "tolerance_lateral_force_rel"};
+//! Table::cell_error where a cell was not measured (a jump cell, a cell narrower than the refinement's finest step).
+inline constexpr double kCellNotMeasured = -1.0;
+
 //! How a patch changes between two neighbouring lateral shifts (a cell of the dy axis).
 enum class JumpKind : std::uint8_t {
   Appears = 1,     //!< the slot is empty at dy_low and holds a patch at dy_high
@@ -92,6 +111,9 @@ struct Table {
   std::vector<double> strip_width_m;
   PatchQuantities patch;
   std::vector<Jump> jumps;                                 //!< sorted by (i_second, wheel, slot, i_dy)
+  //! Adaptive axis only (empty otherwise, and in tables written without it): the interpolation error measured in
+  //! each dy cell, shape (n_dy - 1, n_second, kCellErrorQuantities), kCellNotMeasured where not measured.
+  std::vector<double> cell_error;
   std::map<std::string, std::string> text_attributes;      //!< provenance, UTF-8 (see README)
   std::map<std::string, double> number_attributes;         //!< provenance numbers (material, ...)
   std::map<std::string, std::int64_t> integer_attributes;  //!< provenance integers (threads, ...)
@@ -120,6 +142,11 @@ inline constexpr std::int8_t kMaxMethodValue = 4;
 //! Finds the jumps of a table from its presence flags and rail contact points: a slot that appears or
 //! disappears between neighbours, or whose y_rail_m moves by more than max(1 mm, 10 of the axis's largest dy steps).
 [[nodiscard]] std::vector<Jump> detect_jumps(const Table& table);
+
+//! The jumps of a table: for a table with cell_error (an adaptive axis), the located jumps: in every cell of width
+//! <= kJumpCellWidth_m not measured, each slot that appears, disappears or whose y_rail_m moves by more than
+//! jump_move_threshold(tolerance_contact_point_m attribute); otherwise detect_jumps.
+[[nodiscard]] std::vector<Jump> table_jumps(const Table& table);
 
 //! Outcome of reading or writing a table (no exceptions in this module).
 enum class TableStatus : std::int8_t {

@@ -48,6 +48,26 @@ inline constexpr QuantityRange kApproachRange_m{0.0, 10e-3, "an approach in (0, 
 //! Young's modulus [Pa]: from soft rubber (1e6) to beyond diamond (1.2e12).
 inline constexpr QuantityRange kYoungsModulusRange_Pa{1e6, 1e13, "a Young's modulus in (1e6, 1e13] Pa"};
 
+//! [axes] tolerance: the interpolation error the adaptive dy axis is refined to (docs/method.md "Error-controlled
+//! axes"), per quantity, and the finest step smooth refinement may take. Present: lateral_displacement_m is the
+//! coarse axis the generator starts from.
+struct AxisTolerance {
+  double force_rel = 0.005;          //!< patch normal force, relative (floor: kSmallPatchShare of the wheel's) [-]
+  double area_rel = 0.005;           //!< patch area, relative (same floor) [-]
+  double contact_point_m = 1e-5;     //!< contact point on wheel and rail, absolute [m]
+  double lateral_force_rel = 0.005;  //!< total lateral force as a fraction of the wheel's normal load [-]
+  //! Finest step of smooth refinement [m] (jumps are bracketed to tables::kJumpCellWidth_m regardless). Chosen:
+  //! 10 um. Below it the error no longer falls with the step: the solver's own scatter (strips entering and leaving
+  //! a patch, about 0.5 % in area where two patches share the load) dominates; on the default table 1 um costs 1.5x
+  //! the solves (875 against 599) for cells whose error is that scatter.
+  double min_step_m = 1e-5;
+};
+//! Allowed ranges of the tolerance keys (messages name them).
+inline constexpr double kMaxRelativeTolerance = 0.5;
+inline constexpr double kMaxContactPointTolerance_m = 1e-3;
+inline constexpr double kMinAxisStep_m = 1e-7;  //!< as tables::kMinDyStep
+inline constexpr double kMaxMinAxisStep_m = 1e-3;
+
 struct TableConfig {
   std::string source = "default";  //!< file name, for messages and provenance
   std::string text;                //!< the full config text (provenance)
@@ -78,6 +98,8 @@ struct TableConfig {
   bool warm_start = false;
   //! dy axis [m]: uniform ({start, stop, step}), with the nodes of [axes] lateral_refinement_m's zones merged in
   std::vector<double> lateral_displacement_m;
+  //! [axes] tolerance: the dy axis is decided by the generator from lateral_displacement_m (the coarse axis)
+  std::optional<AxisTolerance> axis_tolerance;
   LoadKind load_kind = LoadKind::VerticalForce;
   std::vector<double> load_values;  //!< second axis, or one fixed value [N or m]
   bool second_axis = false;         //!< true when the load or approach is an axis of the table
