@@ -30,6 +30,7 @@ std::size_t rank_of(Extent extent) noexcept {
     case Extent::PerWheel: return 3;
     case Extent::PerSlot: return 4;
     case Extent::PerSample: return 5;
+    case Extent::PerCell: return 3;
   }
   return 0;
 }
@@ -92,6 +93,18 @@ bool write_labels(hid_t dataset, const std::vector<const char*>& labels) {
   return write_attribute(dataset, "DIMENSION_LABELS", string_type.get(), labels.size(), labels.data());
 }
 
+// A per-cell dataset (n_dy - 1, n_second, quantity): its cells lie between the dy nodes, so only its second
+// dimension has a scale; the others are labelled (dy_cell, quantity) and left without one (an empty list).
+bool attach_per_cell(hid_t dataset, hobj_ref_t self, const std::array<hobj_ref_t, kDimensions>& scales,
+                     std::array<std::vector<Reference>, kDimensions>& references) {
+  if (!write_labels(dataset, {"dy_cell", kNames[1], "quantity"})) return false;
+  hobj_ref_t second = scales[1];
+  const std::array<hvl_t, 3> lists = {hvl_t{0, nullptr}, hvl_t{1, &second}, hvl_t{0, nullptr}};
+  references[1].push_back({self, 1});
+  const Handle list_type(H5Tvlen_create(H5T_STD_REF_OBJ), H5Tclose);
+  return write_attribute(dataset, "DIMENSION_LIST", list_type.get(), lists.size(), lists.data());
+}
+
 // DIMENSION_LABELS and (unless the dataset is a scale itself) DIMENSION_LIST of one dataset; its dimensions appended
 // to the scales' reference lists.
 bool attach(hid_t file, const DimensionedDataset& d, const std::array<hobj_ref_t, kDimensions>& scales,
@@ -100,6 +113,7 @@ bool attach(hid_t file, const DimensionedDataset& d, const std::array<hobj_ref_t
   hobj_ref_t self{};
   if (!dataset.valid() || H5Rcreate(&self, file, d.path, H5R_OBJECT, -1) < 0) return false;
   const std::size_t rank = rank_of(d.extent);
+  if (d.extent == Extent::PerCell) return attach_per_cell(dataset.get(), self, scales, references);
   std::vector<const char*> labels(rank);
   for (std::size_t i = 0; i < rank; ++i) labels[i] = kNames[dimension_of(d.extent, i)];
   if (!write_labels(dataset.get(), labels)) return false;

@@ -67,7 +67,7 @@ std::vector<Field> schema_fields(Table& t) {
           Extent::PerWheel, t.strip_width_m);
   width.optional = true;
   Field cell_error =
-      f64("/axes/cell_error", "-",
+      f64("/axes/cell_error", "1, 1, m, 1",
           "interpolation error measured per dy cell and second-axis value: relative patch normal force, relative "
           "patch area, contact point [m], total lateral force / wheel load; -1 where not measured (jump cells)",
           Extent::PerCell, t.cell_error);
