@@ -121,7 +121,7 @@ TEST(CliBench, GenerateJson) {
   ASSERT_EQ(run.exit_code, 0) << run.output();
   const auto json = nlohmann::json::parse(run.out);
   EXPECT_EQ(json["benchmark"], "generate");
-  EXPECT_EQ(json["lateral_shifts"], 41);  // the config's axis: the default's coarse axis (adaptive)
+  EXPECT_EQ(json["lateral_shifts"], 265);
   ASSERT_EQ(json["rows"].size(), 2u);
   EXPECT_EQ(json["rows"][1]["threads"], 2);
   EXPECT_GT(json["rows"][0]["best_s"].get<double>(), 0.0);

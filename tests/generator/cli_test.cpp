@@ -196,7 +196,7 @@ TEST(CliOptions, ConfigPrintDefaultIsTheEmbeddedDefault) {
   const std::string copy = write_temp("printed_default.toml", run.out);
   const Combined checked = run_ctab("config " + copy);
   EXPECT_EQ(checked.exit_code, 0) << checked.output;
-  EXPECT_NE(checked.output.find("41 lateral shifts x 1 vertical_load_N, wheelset mode, mim1d"), std::string::npos)
+  EXPECT_NE(checked.output.find("265 lateral shifts x 1 vertical_load_N, wheelset mode, mim1d"), std::string::npos)
       << checked.output;
 }
 
