@@ -217,6 +217,8 @@ TEST(CliExitCodes, EachCode) {
       {"--version", 0, "ctab "},
       {"solve --help", 0, "--dy"},
       {"", 2, "ctab: error: A subcommand is required"},
+      {"generat", 2, "ctab: error: unknown command 'generat'; did you mean 'generate'?"},
+      {"xyz", 2, "ctab: error: unknown command 'xyz'; the commands are: generate inspect"},
       {"solve --bogus", 2, "ctab: error: The following argument was not expected: --bogus"},
       {"solve --dy", 2, "ctab: error: "},
       {"solve --dy 2e-3 --normal-load 1 --mode magic", 2, "--mode: magic not in {wheelset,wheel}"},
