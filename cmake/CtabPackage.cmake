@@ -119,6 +119,7 @@ function(ctab_install_pkg_config name target description)
     return()
   endif()
   file(RELATIVE_PATH to_prefix /root/${CMAKE_INSTALL_LIBDIR}/pkgconfig /root)
+  string(REGEX REPLACE "/$" "" to_prefix "${to_prefix}")
   get_target_property(library ${target} OUTPUT_NAME)
   set(pc ${PROJECT_BINARY_DIR}/package/${name}.pc)
   file(WRITE ${pc}

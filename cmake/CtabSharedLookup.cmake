@@ -19,8 +19,12 @@ function(ctab_shared_lookup target output_name)
                         SOVERSION ${CTAB_SOVERSION} LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/lib
                         CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
                         LINK_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/ctab_lookup.map)
-  target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc -Wl,--no-undefined
+  target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc
                       -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/ctab_lookup.map)
+  # Every symbol resolved at link time; not under a sanitizer, whose runtime the loading program provides.
+  if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+    target_link_options(${target} PRIVATE -Wl,--no-undefined)
+  endif()
   target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/lookup/include>)
   ctab_target_warnings(${target})
 endfunction()

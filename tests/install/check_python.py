@@ -82,7 +82,7 @@ def check_hdf5(h5, blob):
 
 
 def check_missing_library(blob):
-    os.environ["CTAB_LOOKUP_LIBRARY"] = "/nonexistent/libctab_lookup.so.0"
+    os.environ["CTAB_LOOKUP_LIBRARY"] = "/nonexistent/libctab_lookup.so.0.2"
     try:
         ctab_lookup.Table(blob)
     except OSError as error:

@@ -6,7 +6,8 @@ prefix=$1 package=$2 source=$3 out=$4 blob=$5 results=$6
 PKG_CONFIG_PATH=$(dirname "$(find "$prefix" -name "$package.pc" | head -n 1)")
 export PKG_CONFIG_PATH
 mkdir -p "$out"
-# shellcheck disable=SC2046  # pkg-config's flags are words
-cc -std=c99 -Wall -Wextra -Werror "$source" $(pkg-config --cflags --libs "$package") \
+# CFLAGS: the build's own flags where it is instrumented (the sanitizers); empty otherwise. Flags are words.
+# shellcheck disable=SC2046,SC2086
+cc -std=c99 -Wall -Wextra -Werror ${CFLAGS:-} "$source" $(pkg-config --cflags --libs "$package") \
    -Wl,-rpath,"$(pkg-config --variable=libdir "$package")" -o "$out/query_blob_$package"
 "$out/query_blob_$package" "$blob" "$results"
