@@ -111,3 +111,21 @@ function(ctab_install_package)
   install(FILES ${PROJECT_BINARY_DIR}/package/ctabConfig.cmake ${PROJECT_BINARY_DIR}/package/ctabConfigVersion.cmake
           DESTINATION ${CTAB_INSTALL_CMAKEDIR})
 endfunction()
+
+# ctab_install_pkg_config(NAME TARGET DESCRIPTION): <libdir>/pkgconfig/NAME.pc for the shared library TARGET,
+# relocatable (paths relative to the .pc file, so that `cmake --install build --prefix P` works for any P).
+function(ctab_install_pkg_config name target description)
+  if(NOT CTAB_INSTALL)
+    return()
+  endif()
+  file(RELATIVE_PATH to_prefix /root/${CMAKE_INSTALL_LIBDIR}/pkgconfig /root)
+  string(REGEX REPLACE "/$" "" to_prefix "${to_prefix}")
+  get_target_property(library ${target} OUTPUT_NAME)
+  set(pc ${PROJECT_BINARY_DIR}/package/${name}.pc)
+  file(WRITE ${pc}
+       "prefix=\${pcfiledir}/${to_prefix}\nlibdir=\${prefix}/${CMAKE_INSTALL_LIBDIR}\n"
+       "includedir=\${prefix}/${CMAKE_INSTALL_INCLUDEDIR}\n\n"
+       "Name: ${name}\nDescription: ctab ${PROJECT_VERSION}: ${description}\nVersion: ${PROJECT_VERSION}\n"
+       "Cflags: -I\${includedir}\nLibs: -L\${libdir} -l${library}\n")
+  install(FILES ${pc} DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endfunction()

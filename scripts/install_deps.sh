@@ -5,7 +5,7 @@
 set -euo pipefail
 packages=(cmake ninja-build g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libgtest-dev googletest
           libbenchmark-dev libcli11-dev ccache libtomlplusplus-dev nlohmann-json3-dev
-          python3-matplotlib python3-h5py openmpi-bin libopenmpi-dev)
+          python3-matplotlib python3-h5py python3-numpy openmpi-bin libopenmpi-dev)
 if [ "${1:-}" = "--fuzz" ]; then
   packages+=(clang libclang-rt-14-dev libomp-14-dev)
 fi

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <vector>
 
+#include "bench_progress.hpp"
 #include "bench_stats.hpp"
 #include "commands.hpp"
 #include "ctab/contact/material.hpp"
@@ -115,7 +116,7 @@ int run_bench_wheelrail(double seconds_per_row, bool json) {
 
 // The default table (241 shifts x 2 wheels) at 1 and 2 threads: best of several runs of the generator, the
 // parallel efficiency t1 / (2 t2), and the size of the written file.
-int run_bench_generate(int repetitions, bool json) {
+int run_bench_generate(int repetitions, bool json, bool progress) {
   const gen::TableConfig config = gen::parse_table_config(gen::kDefaultTableConfig, "default config");
   (void)gen::generate_table(config, gen::GeneratorInfo{});  // warm-up: process-wide tables
   if (!json)
@@ -131,10 +132,12 @@ int run_bench_generate(int repetitions, bool json) {
                              {"rows", nlohmann::json::array()}};
   double best_s[3] = {0, 1e9, 1e9};
   tables::Table table;
+  BenchProgress runs_done(progress, 2 * repetitions);
   for (int threads = 1; threads <= 2; ++threads) {
     gen::GeneratorInfo info;
     info.threads = threads;
     for (int r = 0; r < repetitions; ++r) {
+      runs_done.step(threads == 1 ? "default table, 1 thread" : "default table, 2 threads");
       const auto start = std::chrono::steady_clock::now();
       table = gen::generate_table(config, info);
       best_s[threads] =
@@ -190,19 +193,21 @@ Command add_bench_command(CLI::App& parent) {
   generate->add_option("--repetitions", *repetitions, "runs per thread count")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
+  auto progress = std::make_shared<bool>(false);
+  generate->add_flag("--progress", *progress, "a progress line on stderr also when it is not a terminal");
   auto json = std::make_shared<bool>(false);
   for (CLI::App* bench : {solver, wheelrail, generate})
     bench->add_flag("--json", *json, "print one JSON object (SI units; read by scripts/speed_vs_contact.py)");
   const Command lookup = add_bench_lookup_subcommand(*app);
   const Command accuracy = add_bench_accuracy_subcommand(*app);
   const Command stability = add_bench_stability_subcommand(*app);
-  return {app, [seconds, solver, wheelrail, repetitions, json, lookup, accuracy, stability] {
+  return {app, [seconds, solver, wheelrail, repetitions, json, progress, lookup, accuracy, stability] {
             if (lookup.app->parsed()) return lookup.run();
             if (accuracy.app->parsed()) return accuracy.run();
             if (stability.app->parsed()) return stability.run();
             if (solver->parsed()) return run_bench_solver(*seconds, *json);
             if (wheelrail->parsed()) return run_bench_wheelrail(*seconds, *json);
-            return run_bench_generate(*repetitions, *json);
+            return run_bench_generate(*repetitions, *json, *progress);
           }};
 }
 

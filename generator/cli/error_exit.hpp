@@ -9,8 +9,8 @@ namespace ctab::cli {
 //! and out of memory 3, gen::Error (ParseError, InputError) 2, anything else 1 (an internal error).
 [[nodiscard]] int run_reporting_errors(const std::function<int()>& body);
 
-//! Flushes standard output; a full disk or a closed pipe there turns `code` into 3 (a usage error keeps 2) with a
-//! message on stderr.
+//! Flushes standard output; a full disk or another write error there turns `code` into 3 (a usage error keeps 2)
+//! with a message on stderr. A closed pipe (the reader stopped, as `head` does) keeps `code`, quietly.
 [[nodiscard]] int finish_standard_output(int code);
 
 }  // namespace ctab::cli

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_progress.hpp"
 #include "commands.hpp"
 #include "creep_bench.hpp"
 #include "ctab/core/error.hpp"
@@ -140,7 +141,7 @@ void compare_single(const lookup::Table& full, const lookup::Table& single, cons
               p.dy.size(), worst_scaled, worst_relative);
 }
 
-int bench_table(const std::string& path, std::size_t queries, int repetitions, IsolatedChild& child) {
+int bench_table(const std::string& path, std::size_t queries, int repetitions, bool progress, IsolatedChild& child) {
   lookup::TableData data;
   bool single_blob = false;
   child.reading(path);
@@ -159,14 +160,18 @@ int bench_table(const std::string& path, std::size_t queries, int repetitions, I
   const double overhead = timer_overhead_ns();
   double sink = 0.0;
   lookup::Table tables[3];
+  BenchProgress runs_done(progress, 3 * 2 * repetitions);
   for (std::size_t v = 0; v < 3; ++v) {
     const lookup::LoadResult loaded = tables[v].load(data, variants[v].options);
     if (!loaded.ok()) throw gen::Error(path + ": " + loaded.message);
     const Points points = random_points(tables[v], queries, 1234);
     for (const bool shared : {false, true}) {
       std::vector<Figures> runs;
-      for (int r = 0; r < repetitions; ++r) runs.push_back(measure(tables[v], points, shared, overhead, sink));
       const std::string label = std::string(variants[v].label) + (shared ? ", prelookup for 2 wheels" : ", 1 wheel");
+      for (int r = 0; r < repetitions; ++r) {
+        runs_done.step(label.c_str());
+        runs.push_back(measure(tables[v], points, shared, overhead, sink));
+      }
       report(label.c_str(), runs);
     }
     std::printf("  %-34s memory %.1f kB\n", variants[v].label, static_cast<double>(tables[v].memory_bytes()) / 1024.0);
@@ -178,8 +183,9 @@ int bench_table(const std::string& path, std::size_t queries, int repetitions, I
 }
 
 // In a child process (isolated_read.hpp): the file may be an HDF5 table from anywhere.
-int run_bench_lookup(const std::string& path, std::size_t queries, int repetitions) {
-  return run_isolated([&](IsolatedChild& child) { return bench_table(path, queries, repetitions, child); }).exit_code;
+int run_bench_lookup(const std::string& path, std::size_t queries, int repetitions, bool progress) {
+  return run_isolated([&](IsolatedChild& child) { return bench_table(path, queries, repetitions, progress, child); })
+      .exit_code;
 }
 
 }  // namespace
@@ -193,7 +199,11 @@ Command add_bench_lookup_subcommand(CLI::App& bench) {
   app->add_option("file", *path, "table (.h5 or blob)")->required();
   app->add_option("--queries", *queries, "random queries per repetition (default 1e6)");
   app->add_option("--repetitions", *repetitions, "repetitions (default 5)");
-  return {app, [path, queries, repetitions] { return run_bench_lookup(*path, *queries, *repetitions); }};
+  auto progress = std::make_shared<bool>(false);
+  app->add_flag("--progress", *progress, "a progress line on stderr also when it is not a terminal");
+  return {app, [path, queries, repetitions, progress] {
+            return run_bench_lookup(*path, *queries, *repetitions, *progress);
+          }};
 }
 
 }  // namespace ctab::cli

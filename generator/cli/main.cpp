@@ -3,8 +3,11 @@
 #include <CLI/CLI.hpp>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
+#include <string_view>
 #include <vector>
 
 #include "commands.hpp"
@@ -45,6 +48,45 @@ constexpr CommandEntry kCommands[] = {
     {"query", ctab::cli::add_query_command},       {"merge", ctab::cli::add_merge_command},
     {"batch", ctab::cli::add_batch_command}};
 
+// Levenshtein distance between two short words.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      diagonal = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+    }
+  }
+  return row[b.size()];
+}
+
+// A first argument that is neither an option nor a command: a usage error naming the nearest command (within a
+// third of its length, at least 2 edits) or, failing one, every command. Returns true when it reported one.
+bool reported_unknown_command(int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-' || argv[1][0] == '\0') return false;
+  const std::string_view word = argv[1];
+  const CommandEntry* nearest = nullptr;
+  std::size_t best = 0;
+  for (const CommandEntry& entry : kCommands) {
+    const std::size_t distance = edit_distance(word, entry.name);
+    if (distance == 0) return false;
+    if (nearest == nullptr || distance < best) nearest = &entry, best = distance;
+  }
+  if (best <= std::max<std::size_t>(2, std::string_view(nearest->name).size() / 3)) {
+    std::fprintf(stderr, "ctab: error: unknown command '%s'; did you mean '%s'?\n", argv[1], nearest->name);
+  } else {
+    std::fprintf(stderr, "ctab: error: unknown command '%s'; the commands are:", argv[1]);
+    for (const CommandEntry& entry : kCommands) std::fprintf(stderr, " %s", entry.name);
+    std::fprintf(stderr, "\n");
+  }
+  std::fprintf(stderr, "Run with --help for more information.\n");
+  return true;
+}
+
 std::vector<ctab::cli::Command> add_commands(CLI::App& app, int argc, char** argv) {
   std::vector<ctab::cli::Command> commands;
   for (const CommandEntry& entry : kCommands)
@@ -61,6 +103,7 @@ int main(int argc, char** argv) {
   // No HDF5 clean-up at exit: after a failed write (a full disk) libhdf5 1.10 keeps a file it could not close and
   // crashes closing it again at exit. Every file ctab opens is closed by its reader or writer before the exit.
   H5dont_atexit();
+  if (reported_unknown_command(argc, argv)) return ctab::cli::kExitUsage;
   CLI::App app{"ctab - wheel-rail contact tables: MIM-1D normal contact, table generation, real-time lookup"};
   app.set_version_flag("--version", ctab::cli::version_text());
   app.require_subcommand(1);

@@ -92,12 +92,6 @@ struct Header {
   std::uint64_t value_bytes = 0, payload_size = 0, checksum = 0;
 };
 
-std::uint64_t le(const unsigned char* at, int bytes) noexcept {
-  std::uint64_t v = 0;
-  for (int i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(at[i]) << (8 * i);
-  return v;
-}
-
 // The payload's bytes before its zero padding to a multiple of 8.
 std::size_t unpadded_payload_bytes(std::size_t n_dy, std::size_t n_2, std::size_t n_slots, std::size_t samples,
                                    std::size_t n_jumps, std::size_t value_bytes) noexcept {
@@ -112,8 +106,8 @@ LoadResult fail(ctab_status status, const std::string& what) { return {status, "
 LoadResult check_header(const unsigned char* p, std::uint64_t size, Header& out) {
   if (size < kBlobHeaderBytes || std::memcmp(p, kBlobMagic, 8) != 0)
     return fail(CTAB_ERR_NOT_A_TABLE, "not a ctab blob (no CTABBLOB magic) or shorter than its header");
-  const std::uint64_t version = le(p + 8, 4), schema = le(p + 12, 4), header_bytes = le(p + 20, 4);
-  out = {le(p + 16, 4), le(p + 24, 8), le(p + 32, 8)};
+  const std::uint64_t version = load_le(p + 8, 4), schema = load_le(p + 12, 4), header_bytes = load_le(p + 20, 4);
+  out = {load_le(p + 16, 4), load_le(p + 24, 8), load_le(p + 32, 8)};
   if (version != kBlobVersion)
     return fail(CTAB_ERR_VERSION, "format version " + std::to_string(version) + ", expected 1");
   if (schema != static_cast<std::uint64_t>(kSchemaVersion))

@@ -80,6 +80,14 @@ ctab_status ctab_strip_profile(const ctab_table* table, const ctab_location* whe
   return table->table.strip_profile(*where, wheel, slot, s_m, half_length_m, peak_pressure_Pa, capacity, count);
 }
 
+const char* ctab_version(void) { return CTAB_VERSION_STRING; }
+
+void ctab_version_numbers(int32_t* major, int32_t* minor, int32_t* patch) {
+  if (major) *major = CTAB_VERSION_MAJOR;
+  if (minor) *minor = CTAB_VERSION_MINOR;
+  if (patch) *patch = CTAB_VERSION_PATCH;
+}
+
 const char* ctab_status_message(int32_t status) {
   switch (status) {
     case CTAB_OK: return "ok";

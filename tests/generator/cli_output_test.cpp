@@ -164,6 +164,8 @@ TEST(CliOutput, InterruptRemovesTheTemporaryFile) {
   }
 }
 
+// A full disk is exit 3 with a message; a closed pipe (`ctab geometry | head -n 1`) is the reader's choice: the
+// command's own exit code, nothing on stderr.
 TEST(CliOutput, StandardOutputWriteErrorsExitThree) {
   const int full = ::open("/dev/full", O_WRONLY);
   ASSERT_GE(full, 0);
@@ -182,6 +184,6 @@ TEST(CliOutput, StandardOutputWriteErrorsExitThree) {
   to_closed_pipe.stdout_fd = pipe_ends[1];
   const CtabRun run = run_ctab("geometry --dy-min 0 --dy-max 1e-3", to_closed_pipe);
   ::close(pipe_ends[1]);
-  EXPECT_EQ(run.exit_code, 3) << run.err;
-  EXPECT_NE(run.err.find("cannot write to standard output"), std::string::npos) << run.err;
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");
 }

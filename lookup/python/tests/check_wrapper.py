@@ -40,7 +40,7 @@ def main():
         raise AssertionError("opening a missing file must fail")
     except ValueError as error:
         assert "cannot open" in str(error)
-    print("ctab_lookup.py: %d queries bit-identical to the C library" % count)
+    print("ctab_lookup: %d queries bit-identical to the C library" % count)
 
 
 if __name__ == "__main__":

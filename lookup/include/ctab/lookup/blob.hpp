@@ -19,6 +19,12 @@ inline constexpr std::uint64_t kFnvOffsetBasis = 14695981039346656037ull;
 [[nodiscard]] constexpr std::uint64_t fnv1a64_step(std::uint64_t hash, unsigned char byte) noexcept {
   return (hash ^ byte) * 1099511628211ull;  // FNV prime
 }
+//! The little-endian unsigned integer of `bytes` bytes at `at`.
+[[nodiscard]] constexpr std::uint64_t load_le(const unsigned char* at, int bytes) noexcept {
+  std::uint64_t v = 0;
+  for (int i = 0; i < bytes; ++i) v |= static_cast<std::uint64_t>(at[i]) << (8 * i);
+  return v;
+}
 //! FNV-1a, 64 bit, of `size` bytes.
 [[nodiscard]] std::uint64_t fnv1a64(const void* data, std::size_t size) noexcept;
 

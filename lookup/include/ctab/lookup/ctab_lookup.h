@@ -20,6 +20,17 @@ extern "C" {
 #define CTAB_API
 #endif
 
+/* Version of this header; ctab_version() and ctab_version_numbers() give the loaded library's (they differ only
+ * where a program runs against another library than the one it was compiled with). */
+#define CTAB_VERSION_MAJOR 0
+#define CTAB_VERSION_MINOR 2
+#define CTAB_VERSION_PATCH 0
+#define CTAB_VERSION_STRING "0.2.0"
+#define CTAB_BLOB_FORMAT_VERSION 1 /* the blob layout this library reads (lookup/README.md "Blob format") */
+#define CTAB_TABLE_SCHEMA_VERSION 2 /* the table schema it reads (tables/README.md) */
+CTAB_API const char* ctab_version(void); /* "MAJOR.MINOR.PATCH" */
+CTAB_API void ctab_version_numbers(int32_t* major, int32_t* minor, int32_t* patch); /* any may be NULL */
+
 #define CTAB_MAX_SLOTS 16 /* most patch slots per wheel (= ctab::tables::kMaxSlots) */
 #define CTAB_WHEEL_RIGHT 0
 #define CTAB_WHEEL_LEFT 1
@@ -118,6 +129,20 @@ CTAB_API ctab_status ctab_table_open_memory(const void* data, size_t size, const
                                             ctab_table** table);
 CTAB_API void ctab_table_close(ctab_table* table); /* NULL is fine */
 
+/* A blob's header (its first 64 bytes), read without loading or checksumming it. */
+typedef struct ctab_blob_info {
+  uint32_t format_version; /* blob layout version (this library reads CTAB_BLOB_FORMAT_VERSION) */
+  uint32_t schema_version; /* table schema version of the content (this library reads CTAB_TABLE_SCHEMA_VERSION) */
+  uint32_t value_bytes;    /* 8: double, 4: float (exported with --single-precision) */
+  uint32_t reserved;
+  uint64_t payload_bytes; /* the blob is 64 + payload_bytes long */
+} ctab_blob_info;
+/* CTAB_OK: this library reads that format and schema; CTAB_ERR_VERSION: it does not (*info filled in all the
+ * same); CTAB_ERR_NOT_A_TABLE (no blob magic, shorter than 64 bytes), CTAB_ERR_HDF5_UNAVAILABLE (an HDF5 file),
+ * CTAB_ERR_CANNOT_OPEN or CTAB_INVALID_INPUT: *info zeroed. */
+CTAB_API ctab_status ctab_blob_info_memory(const void* data, size_t size, ctab_blob_info* info);
+CTAB_API ctab_status ctab_blob_info_file(const char* path, ctab_blob_info* info);
+
 /* Table description. */
 CTAB_API uint32_t ctab_table_dy_count(const ctab_table* table);
 CTAB_API uint32_t ctab_table_second_count(const ctab_table* table);
@@ -137,6 +162,14 @@ CTAB_API ctab_status ctab_prelookup(const ctab_table* table, double dy_m, double
 CTAB_API ctab_status ctab_query_prelooked(const ctab_table* table, const ctab_location* where, int32_t wheel,
                                           ctab_result* out);
 CTAB_API ctab_status ctab_query(const ctab_table* table, double dy_m, double second, int32_t wheel, ctab_result* out);
+
+/* n queries of one wheel in one call: point i is (dy_m[i], second[i]); `second` may be NULL when the table has one
+ * second-axis value (otherwise every point is CTAB_INVALID_INPUT). With S = ctab_table_slot_count(table), writes
+ * for each point status[i] (ctab_query's status), quantities[(i * S + s) * CTAB_QUANTITIES + q] and
+ * present[i * S + s]; any output may be NULL. Returns the most severe point status (a failure before CTAB_CLAMPED
+ * before CTAB_OK). */
+CTAB_API ctab_status ctab_query_batch(const ctab_table* table, const double* dy_m, const double* second, size_t n,
+                                      int32_t wheel, int32_t* status, double* quantities, int8_t* present);
 
 /* Strip profile of one slot at a prelooked point: `capacity` >= ctab_table_strip_samples(); writes s [m]
  * (evenly spread over the interpolated [s_min, s_max]), half-length a(s) [m] and peak pressure p0(s) [Pa]

@@ -1,26 +1,30 @@
-"""Thin ctypes wrapper over the ctab lookup C API (lookup/include/ctab/lookup/ctab_lookup.h).
+"""Thin ctypes wrapper over the ctab lookup C API (ctab/lookup/ctab_lookup.h).
 
-The same compiled code as a HIL target: results are those of the C library, bit for bit. The shared library
-(build/lib/libctab_lookup.so, CMake target ctab_lookup_shared) loads blobs (`ctab export FILE.h5 -o FILE.blob`);
-it is found through the path argument, else the CTAB_LOOKUP_LIBRARY environment variable, else
-../../build/lib/libctab_lookup.so next to this file. No installation needed:
+The same compiled code as a HIL target: results are those of the C library, bit for bit. Blobs load through
+libctab_lookup (`ctab export FILE.h5 -o FILE.blob`), HDF5 tables through libctab_lookup_hdf5 where it is installed.
+Where the libraries are looked for, and the CTAB_LOOKUP_LIBRARY override: _library.py. Installed
+(`cmake --install`) into <prefix>/lib/python3/dist-packages; in a checkout, put lookup/python on sys.path:
 
-    import sys; sys.path.insert(0, "lookup/python")
     import ctab_lookup
     with ctab_lookup.Table("build/default_table.blob") as table:
         r = table.query(dy_m=2e-3, wheel="right")
         print(r.status, r.patches[0]["normal_force_N"])
+        batch = table.query_batch(numpy.linspace(-5e-3, 5e-3, 100000))  # numpy arrays, one C call
+        print(batch["normal_force_N"][:, 0])
 """
 import ctypes
 import math
 import os
+
+from . import _library
 
 MAX_SLOTS = 16
 QUANTITIES = ("normal_force_N", "force_lateral_N", "force_vertical_N", "area_m2", "max_pressure_Pa", "approach_m",
               "contact_angle_rad", "plane_angle_rad", "s_origin_y_rail_m", "s_origin_z_rail_m", "y_wheel_m",
               "y_rail_m", "y_cop_rail_m", "rolling_radius_m", "semi_axis_a_m", "semi_axis_b_m", "s_min_m", "s_max_m")
 STATUS = {0: "ok", 1: "clamped", -1: "invalid-input", -2: "not-loaded"}
-ERR_OUT_OF_MEMORY = -17  # CTAB_ERR_OUT_OF_MEMORY
+ERR_VERSION, ERR_OUT_OF_MEMORY = -12, -17  # CTAB_ERR_VERSION, CTAB_ERR_OUT_OF_MEMORY
+_HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
 LINEAR, PCHIP = 0, 1
 
 
@@ -41,18 +45,18 @@ class _Result(ctypes.Structure):
                 ("patch", _Patch * MAX_SLOTS)]
 
 
+class _BlobInfo(ctypes.Structure):
+    _fields_ = [("format_version", ctypes.c_uint32), ("schema_version", ctypes.c_uint32),
+                ("value_bytes", ctypes.c_uint32), ("reserved", ctypes.c_uint32), ("payload_bytes", ctypes.c_uint64)]
+
+
 class _Options(ctypes.Structure):
     _fields_ = [("interpolation", ctypes.c_int32), ("single_precision", ctypes.c_int32)]
 
 
-def _default_library():
-    here = os.path.dirname(os.path.abspath(__file__))
-    return os.environ.get("CTAB_LOOKUP_LIBRARY", os.path.join(here, "..", "..", "build", "lib", "libctab_lookup.so"))
-
-
-def load_library(path=None):
-    """The C library with its prototypes declared."""
-    lib = ctypes.CDLL(path or _default_library())
+def load_library(path=None, hdf5=False):
+    """The C library with its prototypes declared: `path`, else the one _library.find(hdf5) finds."""
+    lib = _library.load(path or _library.find(hdf5))
     P, c = ctypes.POINTER, ctypes
     lib.ctab_table_open.argtypes = [c.c_char_p, P(_Options), P(c.c_void_p)]
     lib.ctab_table_open.restype = c.c_int
@@ -83,7 +87,44 @@ def load_library(path=None):
     lib.ctab_strip_profile.restype = c.c_int
     lib.ctab_status_message.argtypes = [c.c_int32]
     lib.ctab_status_message.restype = c.c_char_p
+    lib.ctab_query_batch.argtypes = [c.c_void_p, c.c_void_p, c.c_void_p, c.c_size_t, c.c_int32, c.c_void_p,
+                                     c.c_void_p, c.c_void_p]
+    lib.ctab_query_batch.restype = c.c_int
+    lib.ctab_version.argtypes = []
+    lib.ctab_version.restype = c.c_char_p
+    lib.ctab_blob_info_file.argtypes = [c.c_char_p, P(_BlobInfo)]
+    lib.ctab_blob_info_file.restype = c.c_int
+    if hasattr(lib, "ctab_table_open_hdf5"):
+        lib.ctab_table_open_hdf5.argtypes = lib.ctab_table_open.argtypes
+        lib.ctab_table_open_hdf5.restype = c.c_int
+    # Further C functions (the creep forces of ctab_lookup.h's creep section) are declared here.
     return lib
+
+
+def version(library=None):
+    """The C library's version, "MAJOR.MINOR.PATCH"."""
+    return load_library(library).ctab_version().decode()
+
+
+def blob_info(path, library=None):
+    """A blob's header as a dict (format_version, schema_version, value_bytes, payload_bytes) and whether this
+    library reads it ("readable"); ValueError for a file that is no blob."""
+    lib, info = load_library(library), _BlobInfo()
+    status = lib.ctab_blob_info_file(os.fsencode(path), ctypes.byref(info))
+    if status not in (0, ERR_VERSION):
+        raise ValueError("%s: %s" % (path, lib.ctab_status_message(status).decode()))
+    return {"format_version": info.format_version, "schema_version": info.schema_version,
+            "value_bytes": info.value_bytes, "payload_bytes": info.payload_bytes, "readable": status == 0}
+
+
+def _is_hdf5(source):
+    if isinstance(source, (bytes, bytearray)):
+        return bytes(source[:8]) == _HDF5_SIGNATURE
+    try:
+        with open(source, "rb") as f:
+            return f.read(8) == _HDF5_SIGNATURE
+    except OSError:
+        return False  # the C library reports it
 
 
 class Result:
@@ -99,18 +140,32 @@ class Result:
                         for s in range(raw.n_slots) if raw.patch[s].present}
 
 
+class BatchResult:
+    """query_batch's answer: status (N, int32: 0 ok, 1 clamped, < 0 failed), quantities (N, slots, 18) in
+    QUANTITIES order, zero where absent, present (N, slots, bool); result["normal_force_N"] is (N, slots)."""
+
+    def __init__(self, status, quantities, present):
+        self.status, self.quantities, self.present = status, quantities, present
+
+    def __getitem__(self, name):
+        return self.quantities[:, :, QUANTITIES.index(name)]
+
+
 class Table:
-    """A loaded table (blob file or bytes). Use as a context manager or call close()."""
+    """A loaded table (blob file or bytes, HDF5 table file where libctab_lookup_hdf5 is installed). Use as a
+    context manager or call close()."""
 
     def __init__(self, source, interpolation=LINEAR, single_precision=False, library=None):
-        self._lib = load_library(library)
+        hdf5 = _is_hdf5(source)
+        self._lib = load_library(library, hdf5)
         self._handle = ctypes.c_void_p()
         options = _Options(interpolation, 1 if single_precision else 0)
         if isinstance(source, (bytes, bytearray)):
             self._buffer = ctypes.create_string_buffer(bytes(source), len(source))
             status = self._lib.ctab_table_open_memory(self._buffer, len(source), options, ctypes.byref(self._handle))
         else:
-            status = self._lib.ctab_table_open(os.fsencode(source), options, ctypes.byref(self._handle))
+            opener = getattr(self._lib, "ctab_table_open_hdf5", self._lib.ctab_table_open) if hdf5 else self._lib.ctab_table_open
+            status = opener(os.fsencode(source), options, ctypes.byref(self._handle))
         if status != 0:  # out of memory (CTAB_ERR_OUT_OF_MEMORY) as Python's own MemoryError, the rest ValueError
             error = MemoryError if status == ERR_OUT_OF_MEMORY else ValueError
             raise error("%s: %s" % (source if not isinstance(source, (bytes, bytearray)) else "<bytes>",
@@ -153,6 +208,23 @@ class Table:
     def query(self, dy_m, second=math.nan, wheel="right"):
         """Every quantity of one wheel at (dy_m, second); `second` is ignored for a table with one value."""
         return Result(self.query_raw(dy_m, second, wheel))
+
+    def query_batch(self, dy_m, second=None, wheel="right"):
+        """N queries of one wheel in one C call (ctab_query_batch) into numpy arrays: a BatchResult. `dy_m` and
+        `second` are array-likes of one shape (a scalar `second` applies to every point; None for a table with one
+        second-axis value)."""
+        import numpy as np
+        dy = np.ascontiguousarray(dy_m, dtype=np.float64).ravel()
+        n = dy.size
+        sec = None if second is None else np.ascontiguousarray(np.broadcast_to(np.asarray(second, np.float64),
+                                                                                 np.shape(dy_m))).ravel()
+        status = np.empty(n, np.int32)
+        quantities = np.empty((n, self.n_slots, len(QUANTITIES)), np.float64)
+        present = np.empty((n, self.n_slots), np.int8)
+        self._lib.ctab_query_batch(self._handle, dy.ctypes.data, None if sec is None else sec.ctypes.data, n,
+                                   self._wheel(wheel), status.ctypes.data, quantities.ctypes.data,
+                                   present.ctypes.data)
+        return BatchResult(status, quantities, present.astype(bool))
 
     def strip_profile(self, dy_m, slot, second=math.nan, wheel="right"):
         """(s_m, half_length_m, peak_pressure_Pa) lists of one slot; empty where the patch is absent."""
