@@ -162,7 +162,7 @@ TEST(LeastModel, ChoiceIsRecordedInTheTable) {
   for (std::size_t i = 0; i < table.n_dy(); ++i) {
     const std::size_t w = table.wheel_index(i, 0, 0);
     if (table.method[w] == static_cast<std::int8_t>(ContactMethod::Bem2d)) {  // escalated (step 4)
-      EXPECT_DOUBLE_EQ(table.strip_width_m[w], kEscalationRowWidth_m);
+      EXPECT_LE(table.strip_width_m[w], kEscalationRowWidth_m);
       escalated = true;
       continue;
     }

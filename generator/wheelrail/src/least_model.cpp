@@ -63,6 +63,31 @@ bool strip_model_at_risk(const WheelContact& contact) noexcept {
 
 namespace {
 
+// The coarsest of `sizes` (coarsest first) with at least kEscalationElementsAcross elements across `extent_m`.
+double escalation_size(double extent_m, std::initializer_list<double> sizes) {
+  double size = *sizes.begin();
+  for (const double s : sizes) {
+    size = s;
+    if (extent_m / s >= kEscalationElementsAcross) break;
+  }
+  return size;
+}
+
+// Row width and element length of an escalated case from its MIM-1D patches carrying >= kResolvedForceShare.
+void escalation_grid(const WheelContact& mim1d, double& row_width_m, double& element_length_m) {
+  double width = kInfinity, length = kInfinity;
+  for (const ContactPatch& p : mim1d.patches) {
+    if (!(p.normal_force_N >= kResolvedForceShare * mim1d.normal_force_N)) continue;
+    double longest = 0.0;
+    for (const PatchStrip& s : p.strips) longest = std::max(longest, 2.0 * s.half_length_m);
+    width = std::min(width, p.s_max_m - p.s_min_m);
+    length = std::min(length, longest);
+  }
+  row_width_m = escalation_size(width, {kEscalationRowWidth_m, 0.5 * kEscalationRowWidth_m});
+  element_length_m = escalation_size(length, {kEscalationElementLength_m, 0.5 * kEscalationElementLength_m,
+                                              0.25 * kEscalationElementLength_m});
+}
+
 // The escalation of a case whose MIM-1D solution `mim1d` has a patch at risk: bem2d on the same case; when bem2d
 // fails, the MIM-1D solution with status UnderResolved (usable, its bound not held) and bem2d's reason.
 WheelContact escalate(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
@@ -70,13 +95,12 @@ WheelContact escalate(const SideGeometry& side, double dy_m, double roll_rad, do
                       WheelContact&& mim1d, AutoChoice& chosen) {
   WheelRailOptions at = options;
   at.method = ContactMethod::Bem2d;
-  at.mim1d.strip_width_m = kEscalationRowWidth_m;
-  at.bem2d_element_length_m = kEscalationElementLength_m;
+  escalation_grid(mim1d, at.mim1d.strip_width_m, at.bem2d_element_length_m);
   WheelContact solved = solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, at, workspace);
   ++chosen.solves;
   if (solved.status == SolveStatus::Converged) {
     chosen.method = ContactMethod::Bem2d;
-    chosen.strip_width_m = kEscalationRowWidth_m;
+    chosen.strip_width_m = at.mim1d.strip_width_m;
     return solved;
   }
   mim1d.status = SolveStatus::UnderResolved;
