@@ -13,8 +13,8 @@ RUNGS = [("hertz", None), ("kp", "0.0002"), ("analyn", "0.0002"), ("mim1d", "0.0
 HEADER = "| region | hertz | kp | analyn | mim1d | bem2d | auto (T 2 %) |\n|---|---|---|---|---|---|---|"
 REGIONS = [("hertz_sphere", "all", "Hertz sphere (analytic)"), ("nonhertz", "all", "non-Hertzian body"),
            ("wheelrail", "tread", "tread (Δy < 4.5 mm)"), ("wheelrail", "two_point", "two-point (4.5–5.75 mm)"),
-           ("wheelrail", "flange_root", "flange root (5.75–6.75 mm)"),
-           ("wheelrail", "flange_flank", "flange flank (> 6.75 mm)")]
+           ("wheelrail", "flange_root", "flange root (5.75–6.55 mm)"), ("wheelrail", "knee", "knee (6.55–7.1 mm)"),
+           ("wheelrail", "flange_flank", "flange flank (> 7.1 mm)")]
 
 
 def percent(value):

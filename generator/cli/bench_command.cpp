@@ -201,7 +201,9 @@ Command add_bench_command(CLI::App& parent) {
   const Command lookup = add_bench_lookup_subcommand(*app);
   const Command accuracy = add_bench_accuracy_subcommand(*app);
   const Command stability = add_bench_stability_subcommand(*app);
-  return {app, [seconds, solver, wheelrail, repetitions, json, progress, lookup, accuracy, stability] {
+  const Command knee = add_bench_knee_subcommand(*app);
+  return {app, [seconds, solver, wheelrail, repetitions, json, progress, lookup, accuracy, stability, knee] {
+            if (knee.app->parsed()) return knee.run();
             if (lookup.app->parsed()) return lookup.run();
             if (accuracy.app->parsed()) return accuracy.run();
             if (stability.app->parsed()) return stability.run();

@@ -26,6 +26,8 @@ Command add_batch_command(CLI::App& parent);
 Command add_bench_lookup_subcommand(CLI::App& bench);
 //! `ctab bench accuracy`, registered on the bench subcommand.
 Command add_bench_accuracy_subcommand(CLI::App& bench);
+//! `ctab bench knee`, registered on the bench subcommand.
+Command add_bench_knee_subcommand(CLI::App& bench);
 //! `ctab bench stability`, registered on the bench subcommand.
 Command add_bench_stability_subcommand(CLI::App& bench);
 

@@ -36,13 +36,29 @@ double total(const std::vector<double>& p) {
   return sum;
 }
 
+// `start`'s pressure at the nearest of its element centres to each potential element of `grid` (0 outside it).
+void pressure_from_field(const ElementGrid& grid, const Bem2dPressureField& start, std::vector<double>& pressure) {
+  for (std::size_t j = 0; j < grid.ny; ++j) {
+    const double sj = std::round((grid.y0 + static_cast<double>(j) * grid.dy - start.y0_m) / start.dy_m);
+    if (!(sj >= 0.0 && sj < static_cast<double>(start.ny))) continue;
+    for (std::size_t i = 0; i < grid.nx; ++i) {
+      const double si = std::round((grid.x0 + static_cast<double>(i) * grid.dx - start.x0_m) / start.dx_m);
+      const std::size_t e = j * grid.nx + i;
+      if (grid.potential[e] && si >= 0.0 && si < static_cast<double>(start.nx))
+        pressure[e] = start.at(static_cast<std::size_t>(si), static_cast<std::size_t>(sj));
+    }
+  }
+}
+
 }  // namespace
 
 void initial_pressure(InfluenceConvolution& influence, const ElementGrid& grid, Prescribed prescribed, double target,
-                      double estimated_approach, std::vector<double>& pressure) {
+                      double estimated_approach, std::vector<double>& pressure, const Bem2dPressureField* start) {
   pressure.assign(grid.h.size(), 0.0);
-  for (std::size_t e = 0; e < pressure.size(); ++e)
-    if (grid.potential[e]) pressure[e] = std::sqrt(std::max(estimated_approach - grid.h[e], 0.0));
+  if (start != nullptr && !start->empty()) pressure_from_field(grid, *start, pressure);
+  if (total(pressure) == 0.0)
+    for (std::size_t e = 0; e < pressure.size(); ++e)
+      if (grid.potential[e]) pressure[e] = std::sqrt(std::max(estimated_approach - grid.h[e], 0.0));
   if (total(pressure) == 0.0)  // the estimate lies below every element centre: start uniform on the potential area
     for (std::size_t e = 0; e < pressure.size(); ++e) pressure[e] = grid.potential[e] ? 1.0 : 0.0;
   if (prescribed == Prescribed::Load) {

@@ -48,10 +48,12 @@ struct CgResult {
                                             Prescribed prescribed, double target, const Bem2dGrid& options,
                                             std::vector<double>& pressure);
 
-//! Start for the CG: p ∝ sqrt(estimate - h) where positive, scaled to the load or, for an approach, by an
+//! Start for the CG: `start`'s pressures at the element centres (nearest element) where it is given and loads a
+//! potential element, else p ∝ sqrt(estimate - h) where positive; scaled to the load or, for an approach, by an
 //! exact line search on the quadratic program (one product with A).
 void initial_pressure(InfluenceConvolution& influence, const ElementGrid& grid, Prescribed prescribed, double target,
-                      double estimated_approach, std::vector<double>& pressure);
+                      double estimated_approach, std::vector<double>& pressure,
+                      const Bem2dPressureField* start = nullptr);
 
 //! Patches (contiguous loaded rows), strips (one per row) and totals of a solved pressure field.
 void assemble_solution(const ElementGrid& grid, const std::vector<double>& pressure, NormalSolution& solution);

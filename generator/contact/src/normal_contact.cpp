@@ -42,8 +42,10 @@ NormalSolution solve_bem2d(const GapProfile& gap, const MethodOptions& options, 
   const double length_m = options.bem2d_element_length_m > 0.0 ? options.bem2d_element_length_m : options.strip_width_m;
   Bem2dGrid grid{.dx_m = length_m, .dy_m = options.strip_width_m};
   grid.alignment = options.bem2d_alignment;
-  return approach_given(loading) ? solve_bem2d_for_approach(gap, options.E_star_Pa, grid, loading.value)
-                                 : solve_bem2d_for_load(gap, options.E_star_Pa, grid, loading.value);
+  return approach_given(loading)
+             ? solve_bem2d_for_approach(gap, options.E_star_Pa, grid, loading.value, options.bem2d_field)
+             : solve_bem2d_for_load(gap, options.E_star_Pa, grid, loading.value, options.bem2d_field,
+                                    options.bem2d_start);
 }
 
 // Input every rung needs; false for InvalidInput.

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "ctab/contact/resolution.hpp"
+#include "ctab/wheelrail/patch_shape.hpp"
 
 namespace ctab::gen {
 
@@ -46,9 +47,69 @@ double richardson_error(const WheelContact& fine, const StripWidthTotals& coarse
   const Totals f = totals(fine);
   const Totals c{coarse.area_m2, coarse.max_pressure_Pa};
   if (!coarse.solved || !(f.area_m2 > 0.0 && f.max_pressure_Pa > 0.0 && c.area_m2 > 0.0)) return kInfinity;
-  return std::max(std::abs(f.area_m2 - c.area_m2) / f.area_m2,
-                  std::abs(f.max_pressure_Pa - c.max_pressure_Pa) / f.max_pressure_Pa);
+  return std::max({std::abs(f.area_m2 - c.area_m2) / f.area_m2,
+                   std::abs(f.max_pressure_Pa - c.max_pressure_Pa) / f.max_pressure_Pa, coarse.worst_patch_change});
 }
+
+bool strip_model_at_risk(const WheelContact& contact) noexcept {
+  int loaded = 0;
+  for (const ContactPatch& p : contact.patches) {
+    if (!(p.normal_force_N >= kResolvedForceShare * contact.normal_force_N)) continue;
+    ++loaded;
+    if (p.zone == "flange" && patch_shape(p).angle_spread_rad >= kEscalationAngleSpread_rad) return true;
+  }
+  return loaded >= 2;
+}
+
+namespace {
+
+// The coarsest of `sizes` (coarsest first) with at least kEscalationElementsAcross elements across `extent_m`.
+double escalation_size(double extent_m, std::initializer_list<double> sizes) {
+  double size = *sizes.begin();
+  for (const double s : sizes) {
+    size = s;
+    if (extent_m / s >= kEscalationElementsAcross) break;
+  }
+  return size;
+}
+
+// Row width and element length of an escalated case from its MIM-1D patches carrying >= kResolvedForceShare.
+void escalation_grid(const WheelContact& mim1d, double& row_width_m, double& element_length_m) {
+  double width = kInfinity, length = kInfinity;
+  for (const ContactPatch& p : mim1d.patches) {
+    if (!(p.normal_force_N >= kResolvedForceShare * mim1d.normal_force_N)) continue;
+    double longest = 0.0;
+    for (const PatchStrip& s : p.strips) longest = std::max(longest, 2.0 * s.half_length_m);
+    width = std::min(width, p.s_max_m - p.s_min_m);
+    length = std::min(length, longest);
+  }
+  row_width_m = escalation_size(width, {kEscalationRowWidth_m, 0.5 * kEscalationRowWidth_m});
+  element_length_m = escalation_size(length, {kEscalationElementLength_m, 0.5 * kEscalationElementLength_m,
+                                              0.25 * kEscalationElementLength_m});
+}
+
+// The escalation of a case whose MIM-1D solution `mim1d` has a patch at risk: bem2d on the same case; when bem2d
+// fails, the MIM-1D solution with status UnderResolved (usable, its bound not held) and bem2d's reason.
+WheelContact escalate(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa, LoadKind load,
+                      double load_value, const WheelRailOptions& options, WheelContactWorkspace& workspace,
+                      WheelContact&& mim1d, AutoChoice& chosen) {
+  WheelRailOptions at = options;
+  at.method = ContactMethod::Bem2d;
+  escalation_grid(mim1d, at.mim1d.strip_width_m, at.bem2d_element_length_m);
+  WheelContact solved = solve_wheel_contact(side, dy_m, roll_rad, E_star_Pa, load, load_value, at, workspace);
+  ++chosen.solves;
+  if (solved.status == SolveStatus::Converged) {
+    chosen.method = ContactMethod::Bem2d;
+    chosen.strip_width_m = at.mim1d.strip_width_m;
+    return solved;
+  }
+  mim1d.status = SolveStatus::UnderResolved;
+  mim1d.detail = "the strip model may miss the tolerance on a patch whose surface turns (bem2d: " +
+                 std::string(status_name(solved.status)) + (solved.detail.empty() ? "" : ", " + solved.detail) + ")";
+  return std::move(mim1d);
+}
+
+}  // namespace
 
 WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, double roll_rad, double E_star_Pa,
                                       LoadKind load, double load_value, const WheelRailOptions& options,
@@ -86,8 +147,18 @@ WheelContact solve_wheel_contact_auto(const SideGeometry& side, double dy_m, dou
     chosen.estimated_error = richardson_error(fine, check);
     const bool last = rung + 1 == kAutoStripWidths_m.size();
     const bool resolved = fine.status != SolveStatus::UnderResolved;
-    if (last || !is_success(fine.status) || (resolved && kAutoSafetyFactor * chosen.estimated_error <= tolerance))
+    const bool within = kAutoSafetyFactor * chosen.estimated_error <= tolerance;
+    if (last || !is_success(fine.status) || (resolved && within)) {
+      // The finest width without the estimate within the tolerance: usable, but its bound does not hold.
+      if (last && !within && fine.status == SolveStatus::Converged) {
+        fine.status = SolveStatus::UnderResolved;
+        fine.detail = "the finest strip width's estimated error exceeds the tolerance on a patch";
+      }
+      if (is_success(fine.status) && fine.status != SolveStatus::NoContact && strip_model_at_risk(fine))
+        return done(escalate(side, dy_m, roll_rad, E_star_Pa, load, load_value, options, workspace, std::move(fine),
+                             chosen));
       return done(std::move(fine));
+    }
     fine = solve_at(kAutoStripWidths_m[rung + 1]);
   }
 }

@@ -60,20 +60,27 @@ bool build_main(WheelCase& c, PatchProblem& main, double depth) {
   return prepare(c, main);
 }
 
-NormalSolution solve_other_rung(const WheelCase& c, const PatchProblem& p, Loading loading) {
+NormalSolution solve_other_rung(const WheelCase& c, const PatchProblem& p, Loading loading,
+                                const Bem2dPressureField* bem2d_start, Bem2dPressureField* bem2d_field) {
   MethodOptions method;
   method.method = c.options.method;
   method.E_star_Pa = c.E_star_Pa;
   method.strip_width_m = c.options.mim1d.strip_width_m;
   method.bem2d_alignment = c.options.bem2d_alignment;
   method.bem2d_element_length_m = c.options.bem2d_element_length_m;
+  method.bem2d_start = bem2d_start;
+  method.bem2d_field = bem2d_field;
   return solve_normal_contact(p.gap, method, loading);
 }
 
 void solve_main_once(WheelCase& c, PatchProblem& main, double force, bool from_previous_pass, double tolerance,
                      const Mim1dSolver::EarlyStop* early_stop) {
   if (!c.mim1d()) {
-    main.solution = solve_other_rung(c, main, Loading::normal_force(force));
+    // bem2d starts each pass from the previous pass's field (the passes change the gap little).
+    const bool bem2d = c.options.method == NormalMethod::Bem2d;
+    const Bem2dPressureField* start = bem2d && from_previous_pass ? &c.ws.bem2d_pass_start : nullptr;
+    main.solution = solve_other_rung(c, main, Loading::normal_force(force), start, bem2d ? &c.ws.bem2d_solved : nullptr);
+    if (bem2d) std::swap(c.ws.bem2d_pass_start, c.ws.bem2d_solved);
   } else {
     static const Mim1dWarmStart cold;
     // Where the conformal grid follows the centre the chain's start is moved onto this case's grid: a neighbour's

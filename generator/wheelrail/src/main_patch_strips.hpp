@@ -17,8 +17,11 @@ namespace ctab::gen {
 //! Samples the main patch in a window of this depth and prepares its solver; false with c.detail saying why.
 [[nodiscard]] bool build_main(WheelCase& c, PatchProblem& main, double depth);
 
-//! A rung other than MIM-1D on a patch's strip problem (normal_contact.hpp).
-[[nodiscard]] NormalSolution solve_other_rung(const WheelCase& c, const PatchProblem& p, Loading loading);
+//! A rung other than MIM-1D on a patch's strip problem (normal_contact.hpp); bem2d takes the optional start and
+//! field of MethodOptions.
+[[nodiscard]] NormalSolution solve_other_rung(const WheelCase& c, const PatchProblem& p, Loading loading,
+                                              const Bem2dPressureField* bem2d_start = nullptr,
+                                              Bem2dPressureField* bem2d_field = nullptr);
 
 //! One strip solve of the main patch at this normal force: warm-started from the neighbour (pass 0, when given) or
 //! from the last successful pass of this case (kept through a failed pass, so that a retry starts from it), else

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ctab/contact/bem2d.hpp"
 #include "ctab/contact/mim1d.hpp"
 #include "ctab/wheelrail/wheelrail_contact.hpp"
 #include "patch_problem.hpp"
@@ -23,6 +24,8 @@ struct WheelContactWorkspace::Impl {
   Mim1dWarmStart pass_start;                 // the main patch's previous pass (gap passes), when not warm-started
   Mim1dWarmStart moved_start;                // pass_start moved onto a grid with another origin (start_on_grid)
   Mim1dWarmStart chain_start;                // the chain's last two solves extrapolated (extrapolate_warm_start)
+  Bem2dPressureField bem2d_pass_start;       // bem2d: the main patch's previous pass
+  Bem2dPressureField bem2d_solved;           // bem2d: the field of the pass being solved
   std::unique_ptr<Mim1dSolver> other_width;  // resolve_at_strip_width's solver
   std::size_t used = 0;
   PatchProblem& acquire() {  // the pool is sized before use

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "centre_following.hpp"
 #include "further_patches.hpp"
@@ -15,6 +16,7 @@
 #include "patch_results.hpp"
 #include "wheel_case.hpp"
 #include "wheelrail_tuning.hpp"
+#include "ctab/contact/resolution.hpp"
 
 namespace ctab::gen {
 
@@ -26,6 +28,26 @@ WheelContactWorkspace::WheelContactWorkspace(WheelContactWorkspace&&) noexcept =
 WheelContactWorkspace& WheelContactWorkspace::operator=(WheelContactWorkspace&&) noexcept = default;
 
 namespace {
+
+// Sums of one patch problem's loaded runs.
+struct PatchTotals {
+  double force_N = 0.0, area_m2 = 0.0, max_pressure_Pa = 0.0;
+};
+
+PatchTotals patch_totals(const NormalSolution& solution) {
+  PatchTotals t;
+  for (const PatchSolution& run : solution.patches) {
+    t.force_N += run.normal_force_N;
+    t.area_m2 += run.area_m2;
+    t.max_pressure_Pa = std::max(t.max_pressure_Pa, run.max_pressure_Pa);
+  }
+  return t;
+}
+
+// |value - reference| / reference; +inf without a positive reference.
+double relative_change(double value, double reference) {
+  return reference > 0.0 ? std::abs(value - reference) / reference : std::numeric_limits<double>::infinity();
+}
 
 std::string invalid_input(const WheelCase& c) {
   const WheelRailOptions& options = c.options;
@@ -218,19 +240,23 @@ StripWidthTotals resolve_at_strip_width(WheelContactWorkspace& workspace, double
                                         const Mim1dOptions& options) noexcept {
   WheelContactWorkspace::Impl& ws = workspace.impl();
   StripWidthTotals totals;
+  double case_force_N = 0.0;
+  for (std::size_t k = 0; k < ws.used; ++k)
+    if (is_success(ws.pool[k].solution.status)) case_force_N += ws.pool[k].solution.normal_load_N;
   for (std::size_t k = 0; k < ws.used; ++k) {
     const PatchProblem& p = ws.pool[k];
-    double force_N = 0.0;
-    for (const PatchSolution& run : p.solution.patches) force_N += run.normal_force_N;
-    if (!is_success(p.solution.status) || !(force_N > 0.0)) continue;
+    const PatchTotals own = patch_totals(p.solution);
+    if (!is_success(p.solution.status) || !(own.force_N > 0.0)) continue;
     if (!prepare_mim1d_solver(ws.other_width, p.gap, E_star_Pa, options).empty()) return {};
-    const NormalSolution solution = ws.other_width->solve_for_load(force_N, Mim1dWarmStart{}, options.tolerance);
+    const NormalSolution solution = ws.other_width->solve_for_load(own.force_N, Mim1dWarmStart{}, options.tolerance);
     if (!is_success(solution.status)) return {};
     totals.matrix_entries += solution.matrix_entries;
-    for (const PatchSolution& run : solution.patches) {
-      totals.area_m2 += run.area_m2;
-      totals.max_pressure_Pa = std::max(totals.max_pressure_Pa, run.max_pressure_Pa);
-    }
+    const PatchTotals other = patch_totals(solution);
+    totals.area_m2 += other.area_m2;
+    totals.max_pressure_Pa = std::max(totals.max_pressure_Pa, other.max_pressure_Pa);
+    if (own.force_N >= kResolvedForceShare * case_force_N)
+      totals.worst_patch_change = std::max({totals.worst_patch_change, relative_change(other.area_m2, own.area_m2),
+                                            relative_change(other.max_pressure_Pa, own.max_pressure_Pa)});
     totals.solved = true;
   }
   return totals;

@@ -21,6 +21,8 @@ struct Loading {
   [[nodiscard]] static Loading normal_force(double force_N) noexcept { return {Kind::NormalForce, force_N}; }
 };
 
+struct Bem2dPressureField;
+
 struct MethodOptions {
   ContactMethod method = ContactMethod::Mim1d;
   double E_star_Pa = 0.0;         //!< combined modulus E* [Pa] (material.hpp)
@@ -31,6 +33,10 @@ struct MethodOptions {
   //! bem2d only: element length along x [m]; 0 = square elements of the strip width. A long, narrow patch (the
   //! flange flank: 1.6 x 29 mm) can take rows finer than its elements are long (flank_grid_test).
   double bem2d_element_length_m = 0.0;
+  //! bem2d, prescribed load only: the solved field of a nearby gap that starts the solve (bem2d.hpp), or null.
+  const Bem2dPressureField* bem2d_start = nullptr;
+  //! bem2d only: receives the solved field (not the object bem2d_start points to), or null.
+  Bem2dPressureField* bem2d_field = nullptr;
 };
 
 //! Solves the gap with options.method. Output for every rung: patches of strips (y, half-length, p0, load).

@@ -16,6 +16,18 @@
 //!    solution at w is taken when kAutoSafetyFactor * e(w) <= T and it is not under-resolved (every patch with
 //!    >= 5 % of the force on >= 8 strips); else w is halved, down to the finest ladder width, which is taken
 //!    whatever its estimate.
+//!    Each patch problem carrying >= 5 % of the normal force is checked as well as the totals (per-patch bound);
+//!    at the finest width an estimate above T gives UnderResolved, never Converged.
+//! 4. Escalation (docs/design/knee-indicator.md): the steps above bound MIM-1D's discretisation error, not the strip
+//!    model's own, which against bem2d reaches 16 % in area and 6 % of F_z in lateral force where the contact
+//!    climbs from the flange root onto the flank, and 3-6 % in area where tread and flange root share the load.
+//!    The case is solved with bem2d (rows kEscalationRowWidth_m wide, elements kEscalationElementLength_m long,
+//!    each halved until the smallest such patch has kEscalationElementsAcross across it, rows down to 0.1 mm and
+//!    elements to 0.2 mm)
+//!    when a patch carrying >= 5 % of the normal force is a flange patch whose surface turns by
+//!    kEscalationAngleSpread_rad or more across its strips (patch_shape.hpp), or when two patches each carry
+//!    >= 5 %. On the S1002/UIC60 sweep dy 4-9 mm (3 loads) this flags 44 % of the cases and misses 3.3 % of the
+//!    patches off the targets. When bem2d fails the MIM-1D solution is returned as UnderResolved.
 //! A case the first solve cannot solve is solved once at kAutoFallbackWidth_m (as `--method mim1d` would); a
 //! first solve without contact is the answer.
 #include <array>
@@ -32,6 +44,17 @@ inline constexpr std::size_t kAutoFirstRung = 1;
 inline constexpr double kAutoSafetyFactor = 1.0;
 //! Width after a failed first solve (the default strip width) [m].
 inline constexpr double kAutoFallbackWidth_m = 0.2e-3;
+//! Inclination spread across a flange patch from which the case escalates to bem2d [rad] (knee-indicator.md).
+inline constexpr double kEscalationAngleSpread_rad = 0.10;
+//! bem2d of an escalated case: row width [m] and element length along the rolling direction [m]. Chosen for the
+//! cost (the default table with auto 3.2x MIM-1D's, against 16x at 0.1 x 0.4 mm): on the knee (dy 6.3-7.5 mm) it
+//! holds the targets per patch against bem2d at 0.05 x 0.4 mm (least_model_knee_test), and CONTACT's conformal
+//! flange cases within 2.5 % in area; on the knee's 14-30 mm long patches 0.4 mm elements change area and
+//! pressure by < 0.1 % against 0.1 mm squares, 0.8 mm by < 0.4 %.
+inline constexpr double kEscalationRowWidth_m = 0.2e-3;
+inline constexpr double kEscalationElementLength_m = 0.8e-3;
+//! Elements across the width and the length of the smallest loaded patch that the escalation's grid aims for [-].
+inline constexpr double kEscalationElementsAcross = 24.0;
 //! Default tolerance of `--method auto` [-].
 inline constexpr double kAutoDefaultTolerance = 0.02;
 
@@ -42,10 +65,14 @@ inline constexpr double kAutoDefaultTolerance = 0.02;
 //! at 2w) to `fine` [-] (+inf when either has no loaded patch or the coarse solve failed).
 [[nodiscard]] double richardson_error(const WheelContact& fine, const StripWidthTotals& coarse) noexcept;
 
+//! Step 4's rule: a flange patch carrying >= kResolvedForceShare of the normal force with an inclination spread of
+//! kEscalationAngleSpread_rad or more, or two patches carrying >= kResolvedForceShare each.
+[[nodiscard]] bool strip_model_at_risk(const WheelContact& contact) noexcept;
+
 //! What the least model chose for a case.
 struct AutoChoice {
-  ContactMethod method = ContactMethod::Mim1d;
-  double strip_width_m = 0.0;    //!< chosen strip width [m]
+  ContactMethod method = ContactMethod::Mim1d;  //!< Bem2d when the case escalated (step 4)
+  double strip_width_m = 0.0;    //!< chosen strip width (bem2d: row width) [m]
   double patch_width_m = 0.0;    //!< W of the first solve [m] (0 when it failed or found no contact)
   double estimated_error = 0.0;  //!< e(w) at the chosen width [-] (0 when no check was made)
   int solves = 0;                //!< wheel solves made (the checks at 2w re-solve strips only: not counted)

@@ -129,6 +129,9 @@ struct StripWidthTotals {
   double area_m2 = 0.0;          //!< total area of the loaded runs [m^2]
   double max_pressure_Pa = 0.0;  //!< largest peak pressure [Pa]
   double matrix_entries = 0.0;   //!< influence-matrix entries the solves built [-] (NormalSolution)
+  //! Largest relative change of area or max pressure of one patch problem carrying at least kResolvedForceShare of
+  //! the case's normal force, from the case's own solve to this one [-] (0 when none was compared).
+  double worst_patch_change = 0.0;
   bool solved = false;           //!< false: no loaded patch, or a strip solve failed (the totals are then zero)
 };
 
