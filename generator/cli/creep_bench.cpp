@@ -116,6 +116,7 @@ void bench_creep(const lookup::Table& table, std::size_t points, double overhead
   }
   std::printf("creep forces (random xi, eta in +-0.01, phi in +-1 1/m, mu 0.3, 16 cells per strip):\n");
   const std::vector<Sample> samples = patches(table, points);
+  one_patch(samples, CTAB_CREEP_STRIPS_CARTER, "strips, Carter:", overhead_ns);
   one_patch(samples, CTAB_CREEP_STRIPS, "strips:", overhead_ns);
   one_patch(samples, CTAB_CREEP_FASTSIM_ELLIPSE, "ellipse FASTSIM:", overhead_ns);
   one_patch(samples, CTAB_CREEP_LINEAR, "linear Kalker:", overhead_ns);

@@ -12,6 +12,7 @@ namespace ctab::cli {
 namespace {
 
 int method_value(const std::string& name) {
+  if (name == "carter") return CTAB_CREEP_STRIPS_CARTER;
   return name == "ellipse" ? CTAB_CREEP_FASTSIM_ELLIPSE : name == "linear" ? CTAB_CREEP_LINEAR : CTAB_CREEP_STRIPS;
 }
 
@@ -31,8 +32,9 @@ void add_creep_options(CLI::App& app, CreepOptions& options) {
       ->check(finite_range(-1e3, 1e3, ""));
   app.add_option("--friction", options.friction, "Coulomb friction coefficient for --creepage")
       ->check(finite_positive("", 10.0));
-  app.add_option("--creep-method", options.method, "strips (default), ellipse (FASTSIM) or linear (Kalker)")
-      ->check(CLI::IsMember({"strips", "ellipse", "linear"}));
+  app.add_option("--creep-method", options.method,
+                 "strips (default), carter (strips on Carter's curve), ellipse (FASTSIM) or linear (Kalker)")
+      ->check(CLI::IsMember({"strips", "carter", "ellipse", "linear"}));
 }
 
 void check_creep_options(const CreepOptions& options) {
