@@ -8,8 +8,8 @@
 namespace ctab::lookup::detail {
 
 //! Strips to march: centre s, half-length a, peak of the parabolic traction bound's pressure q0 (the bound is
-//! mu q0 (1 - x^2 / a^2)), the factor on the strip's inverse flexibilities 1/L (1: Kalker's), width ds (the same
-//! for all).
+//! mu q0 (1 - x^2 / a^2)), the factor on the strip's inverse flexibilities 1/L1, 1/L2 (1: Kalker's), width ds (the
+//! same for all).
 struct MarchStrips {
   double s[kMaxCreepStrips];
   double a[kMaxCreepStrips];
