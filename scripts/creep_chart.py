@@ -11,7 +11,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-STYLE = {"linear-ellipse": ("tab:gray", ":"), "fastsim-ellipse": ("tab:blue", "--"), "fastsim-strips": ("tab:red", "-")}
+STYLE = {"linear-ellipse": ("tab:gray", ":"), "fastsim-ellipse": ("tab:blue", "--"), "fastsim-strips": ("tab:red", "-"),
+         "carter-strips": ("tab:green", "-")}
 
 
 def main(path, prefix):

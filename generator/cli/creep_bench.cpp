@@ -87,7 +87,8 @@ void hil_step(const lookup::Table& table, std::size_t steps, double overhead_ns)
   for (std::size_t i = 0; i < steps; ++i) {
     double dys[4], seconds[4];
     for (int w = 0; w < 4; ++w) dys[w] = dy(random), seconds[w] = second(random);
-    const ctab_creep_input input{creep(random), creep(random), 100.0 * creep(random), 0.3, 0.0, 0.0, 0, 0};
+    const ctab_creep_input input{creep(random), creep(random), 100.0 * creep(random), 0.3, 0.0, 0.0,
+                                 CTAB_CREEP_STRIPS_CARTER, 0};
     const auto start = Clock::now();
     for (int w = 0; w < 4; ++w) {
       table.prelookup(dys[w], seconds[w], where);
@@ -101,7 +102,7 @@ void hil_step(const lookup::Table& table, std::size_t steps, double overhead_ns)
   }
   double mean = 0.0;
   for (const double t : times) mean += t / static_cast<double>(steps);
-  std::printf("  HIL step, 8 wheels (normal query + creep, strips): mean %.2f us  worst %.2f us  p99.99 %.2f us "
+  std::printf("  HIL step, 8 wheels (normal query + creep, Carter strips): mean %.2f us  worst %.2f us  p99.99 %.2f us "
               "(%zu steps; %g)\n",
               mean * 1e-3, *std::max_element(times.begin(), times.end()) * 1e-3, at(times, 0.9999) * 1e-3, steps,
               sink * 0.0);
@@ -116,6 +117,7 @@ void bench_creep(const lookup::Table& table, std::size_t points, double overhead
   }
   std::printf("creep forces (random xi, eta in +-0.01, phi in +-1 1/m, mu 0.3, 16 cells per strip):\n");
   const std::vector<Sample> samples = patches(table, points);
+  one_patch(samples, CTAB_CREEP_STRIPS_CARTER, "strips, Carter:", overhead_ns);
   one_patch(samples, CTAB_CREEP_STRIPS, "strips:", overhead_ns);
   one_patch(samples, CTAB_CREEP_FASTSIM_ELLIPSE, "ellipse FASTSIM:", overhead_ns);
   one_patch(samples, CTAB_CREEP_LINEAR, "linear Kalker:", overhead_ns);

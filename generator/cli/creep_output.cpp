@@ -12,6 +12,7 @@ namespace ctab::cli {
 namespace {
 
 int method_value(const std::string& name) {
+  if (name == "carter") return CTAB_CREEP_STRIPS_CARTER;
   return name == "ellipse" ? CTAB_CREEP_FASTSIM_ELLIPSE : name == "linear" ? CTAB_CREEP_LINEAR : CTAB_CREEP_STRIPS;
 }
 
@@ -31,8 +32,10 @@ void add_creep_options(CLI::App& app, CreepOptions& options) {
       ->check(finite_range(-1e3, 1e3, ""));
   app.add_option("--friction", options.friction, "Coulomb friction coefficient for --creepage")
       ->check(finite_positive("", 10.0));
-  app.add_option("--creep-method", options.method, "strips (default), ellipse (FASTSIM) or linear (Kalker)")
-      ->check(CLI::IsMember({"strips", "ellipse", "linear"}));
+  app.add_option("--creep-method", options.method,
+                 "carter (default: strips on Carter's curve), strips (FASTSIM on the strips), ellipse (FASTSIM) or "
+                 "linear (Kalker)")
+      ->check(CLI::IsMember({"strips", "carter", "ellipse", "linear"}));
 }
 
 void check_creep_options(const CreepOptions& options) {
@@ -72,7 +75,7 @@ nlohmann::json solved_patch_creep(const gen::ContactPatch& patch, const ctab_cre
   lookup::StripForces field;
   (void)lookup::creep_patch(strips, input, out, &field);
   nlohmann::json json = creep_json(out);
-  if (input.method == CTAB_CREEP_STRIPS && out.status >= 0)
+  if ((input.method == CTAB_CREEP_STRIPS || input.method == CTAB_CREEP_STRIPS_CARTER) && out.status >= 0)
     json["strips"] = {{"s_m", s},
                       {"fx_per_m", std::vector<double>(field.fx_per_m, field.fx_per_m + n)},
                       {"fs_per_m", std::vector<double>(field.fs_per_m, field.fs_per_m + n)},

@@ -15,7 +15,7 @@ namespace ctab::cli {
 struct CreepOptions {
   std::vector<double> creepage;  //!< xi, eta [-], phi [1/m]; empty: no creep forces
   double friction = 0.0;
-  std::string method = "strips";
+  std::string method = "carter";
   [[nodiscard]] bool wanted() const { return !creepage.empty(); }
   //! The C input for both bodies of `material`.
   [[nodiscard]] ctab_creep_input input(const gen::ElasticMaterial& material) const;

@@ -1,5 +1,6 @@
-// One patch's creep forces: the patch's strips as given (CTAB_CREEP_STRIPS), its equivalent ellipse marched the
-// same way (CTAB_CREEP_FASTSIM_ELLIPSE), or Kalker's linear theory on that ellipse (CTAB_CREEP_LINEAR).
+// One patch's creep forces: the patch's strips as given (CTAB_CREEP_STRIPS; CTAB_CREEP_STRIPS_CARTER with each
+// strip's march following Carter's strip), its equivalent ellipse marched the same way (CTAB_CREEP_FASTSIM_ELLIPSE),
+// or Kalker's linear theory on that ellipse (CTAB_CREEP_LINEAR).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -65,6 +66,7 @@ void own_strips(const StripPatch& p, const PatchShape& shape, MarchStrips& m) no
     m.s[i] = p.s_m[i];
     m.a[i] = p.half_length_m[i];
     m.q0[i] = scale * p.peak_pressure_Pa[i];
+    m.stiffness[i] = 1.0;
   }
 }
 
@@ -79,6 +81,7 @@ void ellipse_strips(const PatchShape& shape, std::uint32_t n, MarchStrips& m) no
     m.s[i] = shape.s_centre + shape.b * v;
     m.a[i] = shape.a * std::sqrt(w);
     m.q0[i] = peak * w;
+    m.stiffness[i] = 1.0;
   }
 }
 
@@ -101,7 +104,7 @@ bool valid_creep_input(const ctab_creep_input& in) noexcept {
   const bool material = in.youngs_modulus_Pa == 0.0 || (std::isfinite(in.youngs_modulus_Pa) &&
                                                         in.youngs_modulus_Pa > 0.0 && in.poisson_ratio >= 0.0 &&
                                                         in.poisson_ratio < 0.5);
-  const bool method = in.method >= CTAB_CREEP_STRIPS && in.method <= CTAB_CREEP_LINEAR;
+  const bool method = in.method >= CTAB_CREEP_STRIPS && in.method <= CTAB_CREEP_STRIPS_CARTER;
   const bool cells = in.cells == 0 || (in.cells >= kMinCreepCells && in.cells <= kMaxCreepCells);
   return creepages && friction && material && method && cells;
 }
@@ -121,9 +124,11 @@ ctab_status creep_patch(const StripPatch& p, const ctab_creep_input& in, ctab_cr
     const KalkerCoefficients k = kalker_coefficients(shape.a, shape.b, shape.nu);
     const detail::Flexibility flex = detail::flexibility(shape.a, shape.b, shape.shear_modulus, k);
     MarchStrips strips;
-    if (in.method == CTAB_CREEP_STRIPS) own_strips(p, shape, strips);
+    const bool own = in.method != CTAB_CREEP_FASTSIM_ELLIPSE;
+    if (own) own_strips(p, shape, strips);
     else ellipse_strips(shape, static_cast<std::uint32_t>(cells), strips);
-    detail::march(strips, flex, in, cells, out, in.method == CTAB_CREEP_STRIPS ? field : nullptr);
+    if (in.method == CTAB_CREEP_STRIPS_CARTER) detail::carter_stiffness(strips, flex, in);
+    detail::march(strips, flex, in, cells, out, own ? field : nullptr);
   }
   out.force_lateral_N = out.fs_N * std::cos(p.plane_angle_rad);
   out.force_vertical_N = out.fs_N * std::sin(p.plane_angle_rad);

@@ -63,7 +63,8 @@ TEST(CreepHertz, SmallCreepageGivesKalkersC11) {
     const double b = 5e-3 / std::sqrt(ratio), a = 5e-3 * std::sqrt(ratio), force = 80e3;
     const HertzStrips hertz(a, b, force, 32);
     const double c11 = kalker_coefficients(a, b, kNu).c11;
-    for (const int method : {CTAB_CREEP_STRIPS, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_LINEAR}) {
+    for (const int method :
+         {CTAB_CREEP_STRIPS, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_LINEAR, CTAB_CREEP_STRIPS_CARTER}) {
       ctab_creep_patch out;
       ASSERT_EQ(creep_patch(hertz.patch(force), input(1e-5, 0.0, 0.0, method), out), CTAB_OK);
       const double measured = -out.fx_N / (kG * a * b * 1e-5);
@@ -78,7 +79,7 @@ TEST(CreepHertz, SmallCreepageGivesKalkersC11) {
 TEST(CreepHertz, LargeCreepageSaturatesAtMuN) {
   const double a = 6e-3, b = 4e-3, force = 80e3;
   const HertzStrips hertz(a, b, force, 32);
-  for (const int method : {CTAB_CREEP_STRIPS, CTAB_CREEP_FASTSIM_ELLIPSE})
+  for (const int method : {CTAB_CREEP_STRIPS, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_STRIPS_CARTER})
     for (const auto& [xi, eta, phi] : {std::tuple{0.05, 0.0, 0.0}, {0.0, 0.05, 0.0}, {0.05, 0.03, 1.0}}) {
       ctab_creep_patch out;
       ASSERT_EQ(creep_patch(hertz.patch(force), input(xi, eta, phi, method), out), CTAB_OK);

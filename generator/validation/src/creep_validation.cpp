@@ -80,6 +80,7 @@ CreepRow solve_case(const lookup::Table& table, const CreepReference& ref, int m
 }
 
 const char* method_label(int method) {
+  if (method == CTAB_CREEP_STRIPS_CARTER) return "carter-strips";
   return method == CTAB_CREEP_LINEAR ? "linear-ellipse" : method == CTAB_CREEP_FASTSIM_ELLIPSE ? "fastsim-ellipse"
                                                                                                : "fastsim-strips";
 }
@@ -111,7 +112,8 @@ std::vector<CreepRow> run_creep_validation(const std::vector<CreepReference>& ca
     const lookup::Table table = manchester_table(profiles_dir, conformal);
     for (const CreepReference& ref : cases)
       if (ref.conformal == conformal)
-        for (const int method : {CTAB_CREEP_LINEAR, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_STRIPS})
+        for (const int method :
+             {CTAB_CREEP_LINEAR, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_STRIPS, CTAB_CREEP_STRIPS_CARTER})
           rows.push_back(solve_case(table, ref, method));
   }
   return rows;
