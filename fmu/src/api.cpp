@@ -141,11 +141,13 @@ fmi3Status fmi3SetFloat64(fmi3Instance handle, const fmi3ValueReference valueRef
                       nValueReferences);
   for (size_t i = 0; i < nValueReferences; ++i) {
     const VariableRef ref = ctab::fmu::find_variable(valueReferences[i], instance->layout);
-    if (ref.variable == nullptr || ref.causality != Causality::Input)
+    if (ref.variable == nullptr || (ref.causality != Causality::Input && ref.causality != Causality::Parameter))
       return log_status(*instance, fmi3Error, "fmi3SetFloat64: value reference %u is not an input", valueReferences[i]);
-    instance->inputs[ref.variable->index] = values[i];
+    if (ref.causality == Causality::Parameter && instance->state == State::Step)
+      return log_status(*instance, fmi3Error, "fmi3SetFloat64: %s is a fixed parameter, set before initialisation ends",
+                        ref.variable->name);
+    ctab::fmu::set_float64(*instance, ref, values[i]);
   }
-  instance->dirty = instance->dirty || nValueReferences > 0;
   return fmi3OK;
 }
 

@@ -106,10 +106,42 @@ void destroy_instance(Instance* instance) noexcept {
   delete instance;
 }
 
+namespace {
+
+// Field `field` (CreepField) of a creep input.
+template <class In>
+auto* creep_input_field(In& in, int field) noexcept {
+  decltype(&in.xi) const fields[] = {&in.xi, &in.eta, &in.phi_per_m, &in.friction, &in.youngs_modulus_Pa,
+                                     &in.poisson_ratio};
+  return fields[field];
+}
+double creep_total(const ctab_creep_result& r, int field) noexcept {
+  const double values[] = {r.fx_N, r.force_lateral_N, r.force_vertical_N, r.mz_Nm};
+  return values[field];
+}
+double creep_patch(const ctab_creep_patch& p, int field) noexcept {
+  const double values[] = {p.fx_N, p.fs_N, p.mz_Nm, p.slip_fraction};
+  return values[field];
+}
+
+}  // namespace
+
 void reset_instance(Instance& instance) noexcept {
   instance.state = State::Instantiated;
   instance.time = 0.0;
-  for (int i = 0; i < input_count(instance.layout); ++i) instance.inputs[i] = input_start(instance.table, i);
+  for (ctab_creep_input& in : instance.creep_input) in = ctab_creep_input{};  // CTAB_CREEP_STRIPS, 16 cells
+  for_each_variable(instance.layout, [&](const VariableRef& ref) {
+    if (ref.causality == Causality::Input || ref.causality == Causality::Parameter)
+      set_float64(instance, ref, start_value(instance.table, ref));
+  });
+}
+
+void set_float64(Instance& instance, const VariableRef& ref, double value) noexcept {
+  const Variable& v = *ref.variable;
+  if (v.source == Source::Input) instance.inputs[v.index] = value;
+  if (v.source == Source::CreepInput) *creep_input_field(instance.creep_input[ref.wheel], v.index) = value;
+  if (v.source == Source::Material)
+    for (ctab_creep_input& in : instance.creep_input) *creep_input_field(in, v.index) = value;
   instance.dirty = true;
 }
 
@@ -117,7 +149,10 @@ void update_outputs(Instance& instance) noexcept {
   if (!instance.dirty) return;
   ctab_location where;
   ctab_prelookup(instance.table, instance.inputs[0], instance.layout.second_input ? instance.inputs[1] : 0.0, &where);
-  for (int w = 0; w < kWheels; ++w) ctab_query_prelooked(instance.table, &where, w, &instance.result[w]);
+  for (int w = 0; w < kWheels; ++w) {
+    ctab_query_prelooked(instance.table, &where, w, &instance.result[w]);
+    ctab_creep_prelooked(instance.table, &where, w, &instance.creep_input[w], &instance.creep[w]);
+  }
   instance.dirty = false;
 }
 
@@ -129,6 +164,10 @@ double float64_value(const Instance& instance, const VariableRef& ref) noexcept 
     case Source::Quantity: return instance.result[ref.wheel].patch[ref.slot].q[v.index];
     case Source::Roll: return instance.result[CTAB_WHEEL_RIGHT].roll_rad;
     case Source::RollingRadiusDifference: return instance.result[CTAB_WHEEL_RIGHT].rolling_radius_difference_m;
+    case Source::CreepInput: return *creep_input_field(instance.creep_input[ref.wheel], v.index);
+    case Source::Material: return *creep_input_field(instance.creep_input[0], v.index);
+    case Source::CreepTotal: return creep_total(instance.creep[ref.wheel], v.index);
+    case Source::CreepPatch: return creep_patch(instance.creep[ref.wheel].patch[ref.slot], v.index);
     default: return 0.0;
   }
 }
@@ -136,6 +175,7 @@ double float64_value(const Instance& instance, const VariableRef& ref) noexcept 
 int int32_value(const Instance& instance, const VariableRef& ref) noexcept {
   if (ref.variable->source == Source::Status) return instance.result[ref.wheel].status;
   if (ref.variable->source == Source::WorstCaseStatus) return instance.result[ref.wheel].worst_case_status;
+  if (ref.variable->source == Source::CreepStatus) return instance.creep[ref.wheel].status;
   return 0;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// One FMU instance of the wrapper: the loaded table, the inputs, both wheels' last results and the FMI state. All
-// memory is taken at instantiation; Set, Get and DoStep only read and write these members.
+// One FMU instance of the wrapper: the loaded table, the inputs, both wheels' last results (normal and creep) and
+// the FMI state. All memory is taken at instantiation; Set, Get and DoStep only read and write these members.
 #include "ctab/fmu/variables.hpp"
 #include "ctab/lookup/ctab_lookup.h"
 #include "fmi3/fmi3FunctionTypes.h"
@@ -17,6 +17,8 @@ struct Instance {
   double inputs[kMaxInputs] = {};
   bool dirty = true;  // inputs changed since the results were computed
   ctab_result result[kWheels];
+  ctab_creep_input creep_input[kWheels] = {};  // creepages and friction per wheel; the material of both
+  ctab_creep_result creep[kWheels];
   fmi3LogMessageCallback log_message = nullptr;
   fmi3InstanceEnvironment environment = nullptr;
   bool logging_on = false;
@@ -32,10 +34,12 @@ inline constexpr const char* kLogCategories[] = {"logStatusError", "logStatusWar
 Instance* create_instance(fmi3String name, fmi3String token, fmi3String resource_path, bool logging_on,
                           fmi3InstanceEnvironment environment, fmi3LogMessageCallback log_message) noexcept;
 void destroy_instance(Instance* instance) noexcept;
-//! Inputs back to their start values, time 0, state Instantiated.
+//! Inputs and parameters back to their start values, time 0, state Instantiated.
 void reset_instance(Instance& instance) noexcept;
-//! Queries both wheels where the inputs changed since the last query (no allocation).
+//! Queries both wheels and their creep forces where the inputs changed since the last query (no allocation).
 void update_outputs(Instance& instance) noexcept;
+//! Sets an input or parameter (the caller checked its causality) and marks the outputs stale.
+void set_float64(Instance& instance, const VariableRef& ref, double value) noexcept;
 
 //! Logs through the importer's callback (when logging is on and the status' category enabled); returns `status`.
 fmi3Status log_status(Instance& instance, fmi3Status status, const char* format, ...) noexcept

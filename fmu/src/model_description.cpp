@@ -19,7 +19,8 @@ struct UnitRow {
 };
 constexpr UnitRow kUnits[] = {
     {"s", R"(s="1")"},           {"m", R"(m="1")"},   {"m2", R"(m="2")"}, {"N", R"(kg="1" m="1" s="-2")"},
-    {"Pa", R"(kg="1" m="-1" s="-2")"}, {"rad", R"(rad="1")"},
+    {"Pa", R"(kg="1" m="-1" s="-2")"}, {"rad", R"(rad="1")"}, {"1/m", R"(m="-1")"},
+    {"N.m", R"(kg="1" m="2" s="-2")"},
 };
 
 std::string escaped(const std::string& text) {
@@ -57,12 +58,15 @@ std::string variable_element(const ctab_table* table, const VariableRef& ref) {
     xml += R"( causality="independent" variability="continuous")";
   } else if (ref.causality == Causality::Input) {
     xml += R"( causality="input" variability="continuous")";
+  } else if (ref.causality == Causality::Parameter) {
+    xml += R"( causality="parameter" variability="fixed")";
   } else {
     xml += v.type == VarType::Float64 ? R"( causality="output" variability="continuous" initial="calculated")"
                                       : R"( causality="output" variability="discrete" initial="calculated")";
   }
   if (v.unit[0] != '\0') xml += std::string(" unit=\"") + v.unit + "\"";
-  if (ref.causality == Causality::Input) xml += " start=\"" + number(input_start(table, v.index)) + "\"";
+  if (ref.causality == Causality::Input || ref.causality == Causality::Parameter)
+    xml += " start=\"" + number(start_value(table, ref)) + "\"";
   return xml + "/>\n";
 }
 
@@ -90,12 +94,12 @@ std::string model_structure(const Layout& layout) {
 
 // What the table covers, for the model's description.
 std::string table_summary(const ctab_table* table, const DescriptionInfo& info) {
-  char text[512];
+  char text[768];
   const std::uint32_t n_second = ctab_table_second_count(table);
   std::snprintf(text, sizeof text,
                 "Wheel-rail contact table %s: dy from %g to %g m (%u values), %u %s value(s) from %g to %g, %u "
-                "patch slots per wheel. Outputs per wheel (right, left) and slot; inputs outside the table are "
-                "clamped to its edge (status 1).",
+                "patch slots per wheel. Outputs per wheel (right, left) and slot, creep forces from the creepage "
+                "and friction inputs per wheel; inputs outside the table are clamped to its edge (status 1).",
                 info.source.c_str(), ctab_table_dy_min(table), ctab_table_dy_max(table), ctab_table_dy_count(table),
                 n_second, ctab_table_second_axis_name(table), ctab_table_second_value(table, 0),
                 ctab_table_second_value(table, n_second - 1), ctab_table_slot_count(table));

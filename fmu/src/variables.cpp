@@ -39,6 +39,11 @@ constexpr Variable kWheelset[] = {
     {"roll", VarType::Float64, "rad", "wheelset roll angle", Source::Roll, 0},
     {"delta_r", VarType::Float64, "m", "rolling radius difference r_right - r_left", Source::RollingRadiusDifference,
      0},
+    // Both bodies' material for the creep forces (the blob does not carry the table's; the generator's default).
+    {"youngs_modulus", VarType::Float64, "Pa", "Young's modulus of wheel and rail for the creep forces",
+     Source::Material, kYoungsModulus, 208e9},
+    {"poisson_ratio", VarType::Float64, "", "Poisson's ratio of wheel and rail for the creep forces, in [0, 0.5)",
+     Source::Material, kPoissonRatio, 0.3},
 };
 
 constexpr Variable kWheel[] = {
@@ -47,6 +52,24 @@ constexpr Variable kWheel[] = {
     {"worst_case_status", VarType::Int32, "",
      "most severe status of the table cases around the query point (< 0: a failed case is adjacent)",
      Source::WorstCaseStatus, 0},
+    // Creep forces (docs/creep.md): CONTACT's creepages at each patch's s origin, in the wheel's side frame.
+    {"xi", VarType::Float64, "", "longitudinal creepage (rail - wheel velocity) / V; > 0 driving", Source::CreepInput,
+     kXi, 0.0},
+    {"eta", VarType::Float64, "", "lateral creepage along s, + to the field side", Source::CreepInput, kEta, 0.0},
+    {"phi", VarType::Float64, "1/m", "spin creepage about the contact normal", Source::CreepInput, kPhi, 0.0},
+    {"friction", VarType::Float64, "", "Coulomb friction coefficient (> 0; else creep_status < 0 and creep outputs 0)",
+     Source::CreepInput, kFriction, 0.3},
+    {"creep_status", VarType::Int32, "",
+     "ctab_status of the creep call: 0 ok, 1 clamped, < 0 failed (NaN creepage, friction <= 0: creep outputs 0)",
+     Source::CreepStatus, 0},
+    {"creep_fx", VarType::Float64, "N", "longitudinal creep force on the rail, sum over the patches",
+     Source::CreepTotal, kTotalFx},
+    {"creep_force_lateral", VarType::Float64, "N", "lateral part of the creep forces on the rail, + to the field side",
+     Source::CreepTotal, kTotalLateral},
+    {"creep_force_vertical", VarType::Float64, "N", "vertical part of the creep forces on the rail, + downwards",
+     Source::CreepTotal, kTotalVertical},
+    {"creep_mz", VarType::Float64, "N.m", "sum of the patches' spin moments (each about its s origin)",
+     Source::CreepTotal, kTotalMz},
 };
 
 // Per slot: presence, then every quantity of ctab_patch in ctab_quantity order. Frames: each wheel in its own
@@ -82,8 +105,14 @@ constexpr Variable kSlot[] = {
      CTAB_SEMI_AXIS_B_M},
     {"s_min", VarType::Float64, "m", "lower end of the patch in its contact plane", Source::Quantity, CTAB_S_MIN_M},
     {"s_max", VarType::Float64, "m", "upper end of the patch in its contact plane", Source::Quantity, CTAB_S_MAX_M},
+    {"creep_fx", VarType::Float64, "N", "longitudinal creep force on the rail", Source::CreepPatch, kPatchFx},
+    {"creep_fs", VarType::Float64, "N", "lateral creep force on the rail in the contact plane (along s)",
+     Source::CreepPatch, kPatchFs},
+    {"creep_mz", VarType::Float64, "N.m", "spin moment about the s origin", Source::CreepPatch, kPatchMz},
+    {"slip_fraction", VarType::Float64, "", "share of the contact area in slip [0, 1]", Source::CreepPatch,
+     kPatchSlipFraction},
 };
-static_assert(std::size(kSlot) == 1 + CTAB_QUANTITIES, "one output per tabulated quantity");
+static_assert(std::size(kSlot) == 1 + CTAB_QUANTITIES + 4, "one output per tabulated quantity, four creep outputs");
 static_assert(std::size(kSlot) <= kSlotStride && std::size(kWheel) <= kWheelStride);
 
 }  // namespace
@@ -111,10 +140,14 @@ VariableRef find_variable(std::uint32_t vr, const Layout& layout) noexcept {
   if (vr == kTimeVr) return {&kTime, vr, Causality::Independent};
   if (vr >= kInputVr && vr < kInputVr + static_cast<std::uint32_t>(input_count(layout)))
     return {detail::input_variable(static_cast<int>(vr - kInputVr), layout), vr, Causality::Input};
-  if (vr >= kWheelsetVr && vr < kWheelsetVr + std::size(kWheelset)) return {&kWheelset[vr - kWheelsetVr], vr};
+  if (vr >= kWheelsetVr && vr < kWheelsetVr + std::size(kWheelset)) {
+    const Variable& v = kWheelset[vr - kWheelsetVr];
+    return {&v, vr, causality_of(v.source)};
+  }
   if (vr >= kWheelVr && vr < kWheelVr + kWheels * kWheelStride) {
     const std::uint32_t i = (vr - kWheelVr) % kWheelStride;
-    if (i < std::size(kWheel)) return {&kWheel[i], vr, Causality::Output, static_cast<int>((vr - kWheelVr) / kWheelStride)};
+    if (i < std::size(kWheel))
+      return {&kWheel[i], vr, causality_of(kWheel[i].source), static_cast<int>((vr - kWheelVr) / kWheelStride)};
   }
   if (vr >= kSlotVr && vr < kSlotVr + kWheels * kMaxSlots * kSlotStride) {
     const std::uint32_t f = (vr - kSlotVr) % kSlotStride, ws = (vr - kSlotVr) / kSlotStride;
@@ -149,6 +182,10 @@ double input_start(const ctab_table* table, int i) noexcept {
   if (i == 1) return ctab_table_second_value(table, 0);
   const double lo = ctab_table_dy_min(table), hi = ctab_table_dy_max(table);
   return 0.0 < lo ? lo : (0.0 > hi ? hi : 0.0);
+}
+
+double start_value(const ctab_table* table, const VariableRef& ref) noexcept {
+  return ref.variable->source == Source::Input ? input_start(table, ref.variable->index) : ref.variable->start;
 }
 
 }  // namespace ctab::fmu

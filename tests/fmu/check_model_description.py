@@ -36,6 +36,9 @@ def check_variable(v, errors):
     elif causality == "input":
         if start is None or initial is not None or variability in ("constant", "fixed", "tunable"):
             errors.append(f"{name}: an input has a start value, no initial, variability discrete or continuous")
+    elif causality == "parameter":
+        if variability not in ("fixed", "tunable") or start is None or initial not in (None, "exact"):
+            errors.append(f"{name}: a parameter is fixed or tunable, initial exact, with a start value")
     elif causality == "output":
         if variability in ("fixed", "tunable") or initial not in (None, "exact", "approx", "calculated"):
             errors.append(f"{name}: illegal output variability {variability} / initial {initial}")

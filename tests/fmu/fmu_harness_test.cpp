@@ -1,13 +1,15 @@
 // The FMU importer harness (no FMU importer is installable here): `ctab export --format fmu` on a synthetic table,
 // the archive read back with our own ZIP reader, modelDescription.xml checked against the FMI 3.0 rules
 // (check_model_description.py), the wrapper dlopen'ed and driven through the standard Co-Simulation calling
-// sequence for 10 000 steps, its outputs compared bit for bit with ctab_query on the same blob; then the error
+// sequence for 10 000 steps, its outputs compared bit for bit with ctab_query and ctab_creep_prelooked on the same
+// blob (creepages and friction varying, invalid ones included); then the error
 // paths: missing or corrupt resources, a wrong token, unsupported functions, a missing wrapper.
 // CTAB_FMU_TEST_CTAB names the ctab executable to export with (the installed one in package.fmu_installed).
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -182,8 +184,9 @@ TEST_F(FmuHarness, DescriptionNamesEveryQuantityOfEverySlotOfBothWheels) {
   ASSERT_EQ(ctab_table_open_memory(blob_.data(), blob_.size(), nullptr, &table), CTAB_OK);
   const ctab::fmu::Layout layout = ctab::fmu::layout_of(table);
   ctab_table_close(table);
-  // inputs dy and the load; time; roll and delta r; 2 statuses per wheel; (present + 18 quantities) per slot
-  const std::size_t expected = 1 + 2 + 2 + 2 * 2 + 2 * layout.n_slots * (1 + CTAB_QUANTITIES);
+  // time; inputs dy and the load; roll, delta r and the 2 material parameters; per wheel 2 statuses, 4 creep
+  // inputs, the creep status and 4 creep totals; per slot present, 18 quantities and 4 creep outputs
+  const std::size_t expected = 1 + 2 + 4 + 2 * (2 + 4 + 5) + 2 * layout.n_slots * (1 + CTAB_QUANTITIES + 4);
   EXPECT_EQ(description_.variables.size(), expected);
   for (const Description::Var& v : description_.variables) {
     const ctab::fmu::VariableRef ref = ctab::fmu::find_variable(v.vr, layout);
@@ -192,6 +195,16 @@ TEST_F(FmuHarness, DescriptionNamesEveryQuantityOfEverySlotOfBothWheels) {
   }
   EXPECT_EQ(description_.vr_of("dy"), 1u);
   EXPECT_EQ(description_.vr_of("vertical_load"), 2u);
+  for (const char* name : {"right.xi", "right.eta", "right.phi", "right.friction", "left.xi", "left.friction"})
+    EXPECT_EQ(find_variable(description_.vr_of(name), layout).causality, ctab::fmu::Causality::Input) << name;
+  for (const char* name : {"youngs_modulus", "poisson_ratio"})
+    EXPECT_EQ(find_variable(description_.vr_of(name), layout).causality, ctab::fmu::Causality::Parameter) << name;
+  const std::string xml(files_.at("modelDescription.xml").begin(), files_.at("modelDescription.xml").end());
+  for (const char* text : {R"(<Unit name="1/m"><BaseUnit m="-1"/>)", R"(<Unit name="N.m"><BaseUnit kg="1" m="2" s="-2"/>)",
+                           R"(name="right.phi" valueReference="1004")", R"(unit="1/m" start="0")",
+                           R"(name="left.friction")", R"(start="0.29999999999999999")", R"(start="208000000000")",
+                           R"(causality="parameter" variability="fixed")", R"(name="left.slot2.creep_mz")"})
+    EXPECT_NE(xml.find(text), std::string::npos) << text;
 }
 
 // Every output of the description, read with one Get call per type, compared with the C API's answers.
@@ -215,22 +228,40 @@ struct Outputs {
                fmi3OK;
   }
 
-  // Outputs that differ from the answers r[wheel] (doubles compared bit for bit).
-  std::size_t mismatches(const ctab::fmu::Layout& layout, const ctab_result (&r)[2]) const {
+  // The C API's answer for a Float64 output: the query r, the creep forces c.
+  static double expected(const ctab::fmu::VariableRef& ref, const ctab_result (&r)[2],
+                         const ctab_creep_result (&c)[2]) {
+    using ctab::fmu::Source;
+    const int w = ref.wheel < 0 ? 0 : ref.wheel, s = ref.slot < 0 ? 0 : ref.slot, i = ref.variable->index;
+    const ctab_creep_patch& p = c[w].patch[s];
+    const double totals[] = {c[w].fx_N, c[w].force_lateral_N, c[w].force_vertical_N, c[w].mz_Nm};
+    const double patch[] = {p.fx_N, p.fs_N, p.mz_Nm, p.slip_fraction};
+    switch (ref.variable->source) {
+      case Source::Quantity: return r[w].patch[s].q[i];
+      case Source::Roll: return r[0].roll_rad;
+      case Source::RollingRadiusDifference: return r[0].rolling_radius_difference_m;
+      case Source::CreepTotal: return totals[i];
+      case Source::CreepPatch: return patch[i];
+      default: ADD_FAILURE() << ref.variable->name; return 0.0;
+    }
+  }
+
+  // Outputs that differ from the answers r[wheel], c[wheel] (doubles compared bit for bit).
+  std::size_t mismatches(const ctab::fmu::Layout& layout, const ctab_result (&r)[2],
+                         const ctab_creep_result (&c)[2]) const {
     using ctab::fmu::find_variable;
     using ctab::fmu::Source;
     std::size_t n = 0;
     for (std::size_t i = 0; i < f64.size(); ++i) {
-      const ctab::fmu::VariableRef ref = find_variable(f64[i], layout);
-      const double* expected = ref.slot >= 0 ? &r[ref.wheel].patch[ref.slot].q[ref.variable->index]
-                               : ref.variable->source == Source::Roll ? &r[0].roll_rad
-                                                                      : &r[0].rolling_radius_difference_m;
-      n += std::memcmp(expected, &f64_values[i], sizeof(double)) != 0;
+      const double value = expected(find_variable(f64[i], layout), r, c);
+      n += std::memcmp(&value, &f64_values[i], sizeof(double)) != 0;
     }
     for (std::size_t i = 0; i < i32.size(); ++i) {
       const ctab::fmu::VariableRef ref = find_variable(i32[i], layout);
-      n += i32_values[i] != (ref.variable->source == Source::Status ? r[ref.wheel].status
-                                                                     : r[ref.wheel].worst_case_status);
+      const Source source = ref.variable->source;
+      n += i32_values[i] != (source == Source::Status        ? r[ref.wheel].status
+                             : source == Source::CreepStatus ? c[ref.wheel].status
+                                                             : r[ref.wheel].worst_case_status);
     }
     for (std::size_t i = 0; i < b.size(); ++i) {
       const ctab::fmu::VariableRef ref = find_variable(b[i], layout);
@@ -240,8 +271,26 @@ struct Outputs {
   }
 };
 
-// The standard sequence: instantiate, enter and exit initialisation, then per step set inputs, do step, get every
-// output; terminate, free. Every output equals ctab_query's answer on the same blob, bit for bit.
+// The inputs of step `step`: dy beyond both table edges, the load beyond both ends of its axis (clamped answers
+// included), per wheel creepages and friction; a NaN creepage on the right wheel and friction 0 on the left now
+// and then (creep status CTAB_INVALID_INPUT, creep outputs 0).
+void step_inputs(int step, fmi3Float64 (&in)[10]) {
+  const auto sweep = [step](double from, double to, double rate) { return from + (to - from) * std::fmod(step * rate, 1.0); };
+  in[0] = sweep(-15e-3, 15e-3, 0.6180339887);
+  in[1] = sweep(45e3, 115e3, 0.4142135623);
+  for (int w = 0; w < 2; ++w) {
+    in[2 + 4 * w] = sweep(-0.01, 0.01, 0.7548776662 + 0.1 * w);  // xi
+    in[3 + 4 * w] = sweep(-0.01, 0.01, 0.5698402910 + 0.1 * w);  // eta
+    in[4 + 4 * w] = sweep(-3.0, 3.0, 0.3247179572 + 0.1 * w);    // phi [1/m]
+    in[5 + 4 * w] = sweep(0.1, 0.5, 0.2207440846 + 0.1 * w);     // friction
+  }
+  if (step % 97 == 5) in[2] = std::nan("");
+  if (step % 101 == 7) in[9] = 0.0;
+}
+
+// The standard sequence: instantiate, enter initialisation, set a parameter, exit initialisation, then per step set
+// inputs, do step, get every output; terminate, free. Every output equals ctab_query's and ctab_creep_prelooked's
+// answers on the same blob, bit for bit.
 TEST_F(FmuHarness, TenThousandStepsEqualTheCApiBitForBit) {
   ctab_table* table = nullptr;
   ASSERT_EQ(ctab_table_open_memory(blob_.data(), blob_.size(), nullptr, &table), CTAB_OK);
@@ -252,39 +301,58 @@ TEST_F(FmuHarness, TenThousandStepsEqualTheCApiBitForBit) {
   auto do_step = fmu_.get<fmi3DoStepTYPE>("fmi3DoStep");
   ASSERT_EQ(fmu_.get<fmi3EnterInitializationModeTYPE>("fmi3EnterInitializationMode")(instance, fmi3False, 0.0, 0.0,
                                                                                       fmi3False, 0.0), fmi3OK);
-  const fmi3ValueReference inputs[2] = {description_.vr_of("dy"), description_.vr_of("vertical_load")};
-  const fmi3Float64 start[2] = {0.0, 80e3};
-  ASSERT_EQ(set_float64(instance, inputs, 2, start, 2), fmi3OK);
+  fmi3ValueReference inputs[10] = {description_.vr_of("dy"), description_.vr_of("vertical_load")};
+  for (int w = 0; w < 2; ++w)
+    for (int i = 0; i < 4; ++i)
+      inputs[2 + 4 * w + i] = description_.vr_of(std::string(w == 0 ? "right." : "left.") +
+                                                 std::array{"xi", "eta", "phi", "friction"}[static_cast<std::size_t>(i)]);
+  const fmi3ValueReference young = description_.vr_of("youngs_modulus");
+  const fmi3Float64 modulus = 210e9;
+  ASSERT_EQ(set_float64(instance, &young, 1, &modulus, 1), fmi3OK);
   ASSERT_EQ(fmu_.get<fmi3ExitInitializationModeTYPE>("fmi3ExitInitializationMode")(instance), fmi3OK);
   Outputs outputs(description_);
-  const fmi3ValueReference named[2] = {description_.vr_of("left.slot1.max_pressure"),
-                                       description_.vr_of("right.slot0.normal_force")};
+  const fmi3ValueReference named[4] = {description_.vr_of("left.slot1.max_pressure"),
+                                       description_.vr_of("right.slot0.normal_force"),
+                                       description_.vr_of("right.creep_fx"), description_.vr_of("left.slot0.creep_mz")};
   const double h = 1e-3;
   double busy_s = 0.0;
-  std::size_t mismatches = 0;
+  std::size_t mismatches = 0, invalid = 0, valid = 0, forces = 0;
   for (int step = 0; step < 10000; ++step) {
-    // dy sweeps beyond both table edges; the load beyond both ends of its axis (clamped answers included)
-    const fmi3Float64 in[2] = {-15e-3 + 30e-3 * std::fmod(step * 0.6180339887, 1.0),
-                               45e3 + 70e3 * std::fmod(step * 0.4142135623, 1.0)};
+    fmi3Float64 in[10];
+    step_inputs(step, in);
     fmi3Boolean event = fmi3True, terminate = fmi3True, early = fmi3True;
     fmi3Float64 last = -1.0;
     const auto t0 = std::chrono::steady_clock::now();
-    ASSERT_EQ(set_float64(instance, inputs, 2, in, 2), fmi3OK);
+    ASSERT_EQ(set_float64(instance, inputs, 10, in, 10), fmi3OK);
     ASSERT_EQ(do_step(instance, step * h, h, fmi3True, &event, &terminate, &early, &last), fmi3OK);
     ASSERT_TRUE(outputs.get(fmu_, instance));
     busy_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_FALSE(event || terminate || early);
     ASSERT_EQ(last, step * h + h);
     ctab_result r[2];
-    for (int w = 0; w < 2; ++w) ctab_query(table, in[0], in[1], w, &r[w]);
-    mismatches += outputs.mismatches(layout, r);
-    // Two outputs by name, independently of the descriptor table.
-    fmi3Float64 values[2];
-    ASSERT_EQ(fmu_.get<fmi3GetFloat64TYPE>("fmi3GetFloat64")(instance, named, 2, values, 2), fmi3OK);
-    mismatches += values[0] != r[1].patch[1].q[CTAB_MAX_PRESSURE_PA] || values[1] != r[0].patch[0].q[CTAB_NORMAL_FORCE_N];
+    ctab_creep_result c[2];
+    ctab_location where;
+    ctab_prelookup(table, in[0], in[1], &where);
+    for (int w = 0; w < 2; ++w) {
+      ctab_query(table, in[0], in[1], w, &r[w]);
+      const ctab_creep_input creep{in[2 + 4 * w], in[3 + 4 * w], in[4 + 4 * w], in[5 + 4 * w], 210e9, 0.3,
+                                   CTAB_CREEP_STRIPS, 0};
+      ctab_creep_prelooked(table, &where, w, &creep, &c[w]);
+      (c[w].status == CTAB_INVALID_INPUT ? invalid : valid) += 1;
+      forces += c[w].fx_N != 0.0 && c[w].force_lateral_N != 0.0 && c[w].patch[0].mz_Nm != 0.0;
+    }
+    mismatches += outputs.mismatches(layout, r, c);
+    // Four outputs by name, independently of the descriptor table.
+    fmi3Float64 values[4];
+    ASSERT_EQ(fmu_.get<fmi3GetFloat64TYPE>("fmi3GetFloat64")(instance, named, 4, values, 4), fmi3OK);
+    mismatches += values[0] != r[1].patch[1].q[CTAB_MAX_PRESSURE_PA] || values[1] != r[0].patch[0].q[CTAB_NORMAL_FORCE_N] ||
+                  values[2] != c[0].fx_N || values[3] != c[1].patch[0].mz_Nm;
   }
   EXPECT_EQ(mismatches, 0u);
-  std::printf("FMU step (set 2 inputs, fmi3DoStep, get %zu outputs): %.2f us mean over 10000 steps\n",
+  EXPECT_GT(invalid, 150u) << "NaN creepages and zero friction answered with status and zeros";
+  EXPECT_GT(valid, 19000u);
+  EXPECT_GT(forces, 15000u) << "creep forces and moments where a patch is present";
+  std::printf("FMU step (set 10 inputs, fmi3DoStep, get %zu outputs): %.2f us mean over 10000 steps\n",
               outputs.count(), busy_s / 10000 * 1e6);
   EXPECT_EQ(fmu_.get<fmi3TerminateTYPE>("fmi3Terminate")(instance), fmi3OK);
   fmu_.get<fmi3FreeInstanceTYPE>("fmi3FreeInstance")(instance);
@@ -329,6 +397,10 @@ TEST_F(FmuHarness, CallsOutOfSequenceAndUnsupportedFunctionsAreErrors) {
   EXPECT_EQ(fmu_.get<fmi3SetFloat64TYPE>("fmi3SetFloat64")(instance, &roll, 1, &value, 1), fmi3Error);
   EXPECT_TRUE(logged("not an input"));
   EXPECT_EQ(fmu_.get<fmi3SetFloat64TYPE>("fmi3SetFloat64")(instance, &dy, 1, &value, 1), fmi3OK);
+  // The material is a fixed parameter: set before initialisation ends, refused afterwards.
+  const fmi3ValueReference nu = description_.vr_of("poisson_ratio");
+  const fmi3Float64 ratio = 0.25;
+  EXPECT_EQ(fmu_.get<fmi3SetFloat64TYPE>("fmi3SetFloat64")(instance, &nu, 1, &ratio, 1), fmi3OK);
   fmi3FMUState state = nullptr;
   EXPECT_EQ(fmu_.get<fmi3GetFMUStateTYPE>("fmi3GetFMUState")(instance, &state), fmi3Error);
   EXPECT_TRUE(logged("fmi3GetFMUState: not supported"));
@@ -337,6 +409,11 @@ TEST_F(FmuHarness, CallsOutOfSequenceAndUnsupportedFunctionsAreErrors) {
   EXPECT_EQ(fmu_.get<fmi3GetInt8TYPE>("fmi3GetInt8")(instance, &roll, 1, &i8, 1), fmi3Error);
   const fmi3String unknown[1] = {"logNoSuchCategory"};
   EXPECT_EQ(fmu_.get<fmi3SetDebugLoggingTYPE>("fmi3SetDebugLogging")(instance, fmi3True, 1, unknown), fmi3Error);
+  EXPECT_EQ(fmu_.get<fmi3EnterInitializationModeTYPE>("fmi3EnterInitializationMode")(instance, fmi3False, 0.0, 0.0,
+                                                                                      fmi3False, 0.0), fmi3OK);
+  EXPECT_EQ(fmu_.get<fmi3ExitInitializationModeTYPE>("fmi3ExitInitializationMode")(instance), fmi3OK);
+  EXPECT_EQ(fmu_.get<fmi3SetFloat64TYPE>("fmi3SetFloat64")(instance, &nu, 1, &ratio, 1), fmi3Error);
+  EXPECT_TRUE(logged("poisson_ratio is a fixed parameter"));
   EXPECT_EQ(fmu_.get<fmi3ResetTYPE>("fmi3Reset")(instance), fmi3OK);
   fmu_.get<fmi3FreeInstanceTYPE>("fmi3FreeInstance")(instance);
   EXPECT_EQ(fmu_.get<fmi3InstantiateModelExchangeTYPE>("fmi3InstantiateModelExchange")(

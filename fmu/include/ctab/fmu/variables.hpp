@@ -1,10 +1,11 @@
 #pragma once
 //! The FMU's variables, one table of descriptors read by both the wrapper (value reference -> value) and the
-//! exporter (modelDescription.xml). Adding an input (creepages, friction) or a per-slot output (Fx, Fy, Mz) is one
-//! row in variables.cpp plus where its value comes from in the wrapper (Source).
+//! exporter (modelDescription.xml). Adding a variable is one row in variables.cpp plus where its value comes from
+//! in the wrapper (Source); the Source also gives its causality (causality_of).
 //!
-//! Value references: 0 time; 1 + i input i; 100 + i wheelset output i; 1000 + 100 w + i output i of wheel w;
-//! 10000 + 64 (16 w + s) + f field f of slot s of wheel w (w: 0 right, 1 left).
+//! Value references: 0 time; 1 + i input i; 100 + i wheelset variable i (outputs, the material parameters);
+//! 1000 + 100 w + i variable i of wheel w (outputs, the creepage and friction inputs); 10000 + 64 (16 w + s) + f
+//! field f of slot s of wheel w (w: 0 right, 1 left).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -15,7 +16,7 @@ inline constexpr const char* kModelIdentifier = "ctab_contact_table";  //!< the 
 inline constexpr const char* kTableResource = "table.ctab";            //!< the blob under resources/
 
 enum class VarType : std::uint8_t { Float64, Int32, Boolean };
-enum class Causality : std::uint8_t { Independent, Input, Output };
+enum class Causality : std::uint8_t { Independent, Input, Output, Parameter };
 
 //! Where the wrapper takes a variable's value from.
 enum class Source : std::uint8_t {
@@ -26,8 +27,18 @@ enum class Source : std::uint8_t {
   Status,           //!< the wheel's query status (ctab_status)
   WorstCaseStatus,  //!< the wheel's worst neighbouring case status
   Roll,             //!< roll_rad of the right wheel's result
-  RollingRadiusDifference
+  RollingRadiusDifference,
+  CreepInput,       //!< input: field index of the wheel's ctab_creep_input (CreepField)
+  Material,         //!< parameter (fixed): field index of both wheels' ctab_creep_input (CreepField)
+  CreepTotal,       //!< wheel total index of the wheel's ctab_creep_result (CreepTotalField)
+  CreepStatus,      //!< the wheel's creep call status (ctab_status)
+  CreepPatch        //!< field index of patch[slot] of the wheel's ctab_creep_result (CreepPatchField)
 };
+
+//! Fields of ctab_creep_input, ctab_creep_result and ctab_creep_patch addressed by Variable::index.
+enum CreepField : int { kXi, kEta, kPhi, kFriction, kYoungsModulus, kPoissonRatio };
+enum CreepTotalField : int { kTotalFx, kTotalLateral, kTotalVertical, kTotalMz };
+enum CreepPatchField : int { kPatchFx, kPatchFs, kPatchMz, kPatchSlipFraction };
 
 struct Variable {
   const char* name;  //!< leaf name (under "right.", "right.slot0." ... for per-wheel and per-slot variables)
@@ -36,7 +47,17 @@ struct Variable {
   const char* description;
   Source source;
   int index;
+  double start = 0.0;  //!< start value of a per-wheel input or a parameter
 };
+
+//! Inputs and parameters by their source; every other variable is an output (time independent).
+[[nodiscard]] constexpr Causality causality_of(Source source) noexcept {
+  return source == Source::Time         ? Causality::Independent
+         : source == Source::Input ||
+               source == Source::CreepInput ? Causality::Input
+         : source == Source::Material       ? Causality::Parameter
+                                            : Causality::Output;
+}
 
 //! What the variables of a table depend on: its slot count and whether the second axis is an input (more than one
 //! value).
@@ -91,11 +112,12 @@ void for_each_variable(const Layout& layout, F&& f) {
   for (int i = 0; i < input_count(layout); ++i)
     f(VariableRef{detail::input_variable(i, layout), kInputVr + static_cast<std::uint32_t>(i), Causality::Input});
   for (std::size_t i = 0; i < detail::wheelset_count(); ++i)
-    f(VariableRef{&detail::wheelset_variable(i), kWheelsetVr + static_cast<std::uint32_t>(i)});
+    f(VariableRef{&detail::wheelset_variable(i), kWheelsetVr + static_cast<std::uint32_t>(i),
+                  causality_of(detail::wheelset_variable(i).source)});
   for (int w = 0; w < kWheels; ++w)
     for (std::size_t i = 0; i < detail::wheel_count(); ++i)
       f(VariableRef{&detail::wheel_variable(i), kWheelVr + kWheelStride * static_cast<std::uint32_t>(w) + static_cast<std::uint32_t>(i),
-                    Causality::Output, w});
+                    causality_of(detail::wheel_variable(i).source), w});
   for (int w = 0; w < kWheels; ++w)
     for (std::uint32_t s = 0; s < layout.n_slots; ++s)
       for (std::size_t f_i = 0; f_i < detail::slot_field_count(); ++f_i)
@@ -114,5 +136,7 @@ namespace ctab::fmu {
 [[nodiscard]] Layout layout_of(const ::ctab_table* table) noexcept;
 //! Start value of input i (dy: 0 clamped to the table's range; the second axis: its first value).
 [[nodiscard]] double input_start(const ::ctab_table* table, int i) noexcept;
+//! Start value of any input or parameter (input_start for the axes, the descriptor's start otherwise).
+[[nodiscard]] double start_value(const ::ctab_table* table, const VariableRef& ref) noexcept;
 
 }  // namespace ctab::fmu
