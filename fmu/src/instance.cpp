@@ -129,7 +129,7 @@ double creep_patch(const ctab_creep_patch& p, int field) noexcept {
 void reset_instance(Instance& instance) noexcept {
   instance.state = State::Instantiated;
   instance.time = 0.0;
-  for (ctab_creep_input& in : instance.creep_input) in = ctab_creep_input{};  // CTAB_CREEP_STRIPS, 16 cells
+  for (ctab_creep_input& in : instance.creep_input) in = ctab_creep_input{};  // CTAB_CREEP_STRIPS_CARTER, 16 cells
   for_each_variable(instance.layout, [&](const VariableRef& ref) {
     if (ref.causality == Causality::Input || ref.causality == Causality::Parameter)
       set_float64(instance, ref, start_value(instance.table, ref));

@@ -31,7 +31,7 @@ static ctab_creep_input creepages(const ctab_result* normal, int wheel, double l
   in.eta = side * lateral_velocity / SPEED_M_S;
   in.phi_per_m = normal->patch[0].present ? -sin(normal->patch[0].q[CTAB_PLANE_ANGLE_RAD]) / RADIUS_M : 0.0;
   in.friction = 0.3;
-  in.method = CTAB_CREEP_STRIPS;
+  in.method = CTAB_CREEP_STRIPS_CARTER;
   return in;
 }
 

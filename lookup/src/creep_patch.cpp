@@ -104,7 +104,7 @@ bool valid_creep_input(const ctab_creep_input& in) noexcept {
   const bool material = in.youngs_modulus_Pa == 0.0 || (std::isfinite(in.youngs_modulus_Pa) &&
                                                         in.youngs_modulus_Pa > 0.0 && in.poisson_ratio >= 0.0 &&
                                                         in.poisson_ratio < 0.5);
-  const bool method = in.method >= CTAB_CREEP_STRIPS && in.method <= CTAB_CREEP_STRIPS_CARTER;
+  const bool method = in.method >= CTAB_CREEP_STRIPS_CARTER && in.method <= CTAB_CREEP_STRIPS;
   const bool cells = in.cells == 0 || (in.cells >= kMinCreepCells && in.cells <= kMaxCreepCells);
   return creepages && friction && material && method && cells;
 }

@@ -336,7 +336,7 @@ TEST_F(FmuHarness, TenThousandStepsEqualTheCApiBitForBit) {
     for (int w = 0; w < 2; ++w) {
       ctab_query(table, in[0], in[1], w, &r[w]);
       const ctab_creep_input creep{in[2 + 4 * w], in[3 + 4 * w], in[4 + 4 * w], in[5 + 4 * w], 210e9, 0.3,
-                                   CTAB_CREEP_STRIPS, 0};
+                                   CTAB_CREEP_STRIPS_CARTER, 0};
       ctab_creep_prelooked(table, &where, w, &creep, &c[w]);
       (c[w].status == CTAB_INVALID_INPUT ? invalid : valid) += 1;
       forces += c[w].fx_N != 0.0 && c[w].force_lateral_N != 0.0 && c[w].patch[0].mz_Nm != 0.0;

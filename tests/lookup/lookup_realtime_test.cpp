@@ -91,7 +91,8 @@ TEST(LookupRealtime, CountingAllocatorSeesLoadsButNoQueries) {
     ctab_prelookup(table, dy, 1e9, &where);
     ctab_query_prelooked(table, &where, 1, &result);
     ctab_strip_profile(table, &where, 1, 0, s, a, p0, 16, &count);
-    for (const int32_t method : {CTAB_CREEP_STRIPS, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_LINEAR}) {
+    for (const int32_t method :
+         {CTAB_CREEP_STRIPS_CARTER, CTAB_CREEP_FASTSIM_ELLIPSE, CTAB_CREEP_LINEAR, CTAB_CREEP_STRIPS}) {
       const ctab_creep_input creep{dy * 0.1, -dy * 0.1, 0.5, 0.3, 0.0, 0.0, method, 0};
       ctab_creep_prelooked(table, &where, 1, &creep, &creep_result);
     }

@@ -191,10 +191,11 @@ CTAB_API const char* ctab_status_message(int32_t status);
  * are CONTACT's: (rail velocity - wheel velocity) / V at the patch's s origin; positive xi (a driving wheel) gives
  * a force on the rail < 0; spin phi [1/m] about the contact normal. */
 typedef enum ctab_creep_method {
-  CTAB_CREEP_STRIPS = 0,           /* FASTSIM on the patch's own strips, parabolic bound per strip (default) */
+  CTAB_CREEP_STRIPS_CARTER = 0,   /* FASTSIM on the patch's own strips, each strip's force on Carter's 2-D curve
+                                      (partial slip; the default: best against CONTACT, docs/creep.md) */
   CTAB_CREEP_FASTSIM_ELLIPSE = 1,  /* FASTSIM on the equivalent ellipse (Kalker 1982) */
   CTAB_CREEP_LINEAR = 2,           /* Kalker's linear theory on the equivalent ellipse (no saturation) */
-  CTAB_CREEP_STRIPS_CARTER = 3     /* as STRIPS, each strip's force on Carter's 2-D curve (partial slip) */
+  CTAB_CREEP_STRIPS = 3            /* FASTSIM on the patch's own strips, parabolic bound per strip */
 } ctab_creep_method;
 
 typedef struct ctab_creep_input {
