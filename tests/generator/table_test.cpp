@@ -301,7 +301,8 @@ TEST(Table, VerticalLoadIdentityOnEveryCaseOfTheDefaultTable) {
       if (table.strip_width_m[w] == 0.2e-3) continue;
       ++refined;
       EXPECT_EQ(table.strip_width_m[w], 0.1e-3);
-      EXPECT_GT(std::abs(table.lateral_displacement_m[i]) * 1e3, 8.95) << "refined at dy " << table.lateral_displacement_m[i];
+      EXPECT_GT(std::abs(table.lateral_displacement_m[i]) * 1e3, 8.95)
+          << "refined at dy " << table.lateral_displacement_m[i];
     }
   EXPECT_EQ(refined, 62u);
   EXPECT_LE(residual, 1e-9);
