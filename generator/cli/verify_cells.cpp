@@ -136,7 +136,7 @@ void take_knee(std::vector<Candidate>& candidates, CellClasses& classes) {
     threshold = gradients[k];
   }
   for (const Candidate& c : candidates) {
-    const bool knee = c.gradient >= threshold && c.gradient > 0.0;
+    const bool knee = c.gradient >= threshold && c.gradient > kKneeMinGradient_per_m;
     classes[static_cast<std::size_t>(knee ? CellClass::Knee : c.fallback)].push_back(c.cell);
   }
 }

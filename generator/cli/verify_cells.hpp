@@ -33,6 +33,9 @@ inline constexpr double kLocatedJumpWidth_m = 1e-6;
 inline constexpr double kFlangeAngle_rad = 0.5235987755982988;
 //! Share of the cells (by the fastest force change) that are knee cells [-].
 inline constexpr double kKneeShare = 0.1;
+//! A knee cell's force changes faster than this share of the wheel's force per metre of dy (rounding noise of a
+//! constant force does not make a knee) [1/m].
+inline constexpr double kKneeMinGradient_per_m = 1e-3;
 
 //! Where a class draws its points: one wheel, dy in [dy_low, dy_high], the second axis in [second_low,
 //! second_high] (equal on a table with one value).
