@@ -37,7 +37,7 @@ int halvings_to_resolve(const WheelContact& contact, ContactMethod method, doubl
 // halving of its strip width the narrowest patch asks for, and once more halved while a solve stays under-resolved,
 // down to kMinStripWidth_m: the status stays where that width cannot resolve the patch. The warm start is left as
 // the solve at the configured width made it, so the chain continues at that width.
-void refine_under_resolved(const SweepSetup& setup, double shift_m, double roll_rad, double load_value,
+void refine_strip_width(const SweepSetup& setup, double shift_m, double roll_rad, double load_value,
                            WheelContactWorkspace& workspace, CaseWheel& out) {
   WheelRailOptions options = setup.options;
   options.method = out.choice.method;
@@ -76,7 +76,8 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
                                               setup.options, workspace)
                         : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
                                               setup.options, workspace, *warm_start);
-    if (roll.converged) refine_under_resolved(setup, shift, angle, load_value, workspace, out);
+    if (roll.converged && setup.refine_under_resolved)
+      refine_strip_width(setup, shift, angle, load_value, workspace, out);
     if (!roll.converged) {
       if (warm_start != nullptr) warm_start->clear();
       out.contact.status = SolveStatus::MaxIterations;
