@@ -38,7 +38,7 @@ int halvings_to_resolve(const WheelContact& contact, ContactMethod method, doubl
 // down to kMinStripWidth_m: the status stays where that width cannot resolve the patch. The warm start is left as
 // the solve at the configured width made it, so the chain continues at that width.
 void refine_strip_width(const SweepSetup& setup, double shift_m, double roll_rad, double load_value,
-                           WheelContactWorkspace& workspace, CaseWheel& out) {
+                        WheelContactWorkspace& workspace, CaseWheel& out) {
   WheelRailOptions options = setup.options;
   options.method = out.choice.method;
   double width_m = out.choice.strip_width_m;
@@ -51,7 +51,8 @@ void refine_strip_width(const SweepSetup& setup, double shift_m, double roll_rad
                                              load_value, options, workspace);
     ++out.choice.solves;
     out.choice.matrix_entries += finer.matrix_entries;
-    if (!is_success(finer.status)) return;  // the coarser usable solution stays
+    // a failure (or a contact lost at the finer width) keeps the coarser usable solution
+    if (finer.status != SolveStatus::Converged && finer.status != SolveStatus::UnderResolved) return;
     out.contact = std::move(finer);
     out.choice.strip_width_m = width_m;
   }
