@@ -22,6 +22,7 @@ Command add_export_command(CLI::App& parent);
 Command add_query_command(CLI::App& parent);
 Command add_merge_command(CLI::App& parent);
 Command add_batch_command(CLI::App& parent);
+Command add_verify_command(CLI::App& parent);
 //! `ctab bench lookup`, registered on the bench subcommand.
 Command add_bench_lookup_subcommand(CLI::App& bench);
 //! `ctab bench accuracy`, registered on the bench subcommand.

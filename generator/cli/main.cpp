@@ -32,7 +32,7 @@ int run(CLI::App& app, const std::vector<ctab::cli::Command>& commands, int argc
   });
 }
 
-// Every subcommand by name and its registration. Registering all eleven took 0.5 ms of every start (CLI11 options
+// Every subcommand by name and its registration. Registering all of them took 0.5 ms of every start (CLI11 options
 // and validators), so a command line whose first argument names one registers that one alone: its options are all
 // the parse needs. Help, version and a misspelt or missing command register them all (CLI11 lists and reports them
 // as usual). cli_test checks each name against its subcommand's (`ctab NAME --help`).
@@ -46,7 +46,7 @@ constexpr CommandEntry kCommands[] = {
     {"geometry", ctab::cli::add_geometry_command}, {"bench", ctab::cli::add_bench_command},
     {"config", ctab::cli::add_config_command},     {"export", ctab::cli::add_export_command},
     {"query", ctab::cli::add_query_command},       {"merge", ctab::cli::add_merge_command},
-    {"batch", ctab::cli::add_batch_command}};
+    {"batch", ctab::cli::add_batch_command},       {"verify", ctab::cli::add_verify_command}};
 
 // Levenshtein distance between two short words.
 std::size_t edit_distance(std::string_view a, std::string_view b) {

@@ -94,7 +94,7 @@ std::vector<Field> schema_fields(Table& t) {
       f64("/patches/max_pressure_Pa", "Pa", "maximum pressure", Extent::PerSlot, p.max_pressure_Pa, kPositive),
       f64("/patches/approach_m", "m", "normal approach of the patch", Extent::PerSlot, p.approach_m, kAny),
       f64("/patches/contact_angle_rad", "rad",
-          "direction of the resultant normal force: load-weighted rail inclination over the strips (< 0 gauge side)",
+          "direction of the resultant normal force, atan2(-force_lateral_N, force_vertical_N) (< 0 gauge side)",
           Extent::PerSlot, p.contact_angle_rad, kAny),
       f64("/patches/plane_angle_rad", "rad", "inclination delta of the contact plane in which s is measured",
           Extent::PerSlot, p.plane_angle_rad, kAny),

@@ -51,6 +51,8 @@ TEST(CliSurface, ConformalTurnsTheFlangeRootForce) {
   const double planar_direction =
       std::atan2(-planar_patch["force_lateral_N"].get<double>(), planar_patch["force_vertical_N"].get<double>());
   EXPECT_NEAR(planar_direction, planar_patch["plane_angle_rad"].get<double>(), 1e-9);
+  // contact_angle_rad is the force direction on both surfaces.
+  EXPECT_NEAR(planar_patch["contact_angle_rad"].get<double>(), planar_direction, 1e-12);
   EXPECT_GT(std::abs(direction - planar_direction), 1e-3);
 }
 

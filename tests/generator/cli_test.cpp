@@ -39,7 +39,7 @@ TEST(Cli, HelpListsSubcommands) {
 TEST(Cli, EverySubcommandByItsName) {
   const std::string help = run_ctab("--help").output;
   for (const char* name : {"generate", "inspect", "solve", "paper-cases", "geometry", "bench", "config", "export",
-                           "query", "merge", "batch"}) {
+                           "query", "merge", "batch", "verify"}) {
     const Combined run = run_ctab(std::string(name) + " --help");
     EXPECT_EQ(run.exit_code, 0) << name << ": " << run.output;
     EXPECT_NE(run.output.find(std::string("ctab ") + name), std::string::npos) << name << ": " << run.output;

@@ -1,10 +1,12 @@
 // One table case (table_generator.hpp): the wheelset roll at a lateral shift, one wheel's contact, and a whole case
 // as the sweep solves it (its warm-start chain replayed), for `ctab solve` and the sweep alike.
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "ctab/sweep/case_partition.hpp"
 #include "ctab/sweep/table_generator.hpp"
+#include "ctab/wheelrail/patch_extents.hpp"
 
 namespace ctab::gen {
 
@@ -17,6 +19,46 @@ CaseRoll solve_case_roll(const SweepSetup& setup, double dy_m, const RollGuess* 
     return {0.0, false, "the wheelset roll search threw"};
   }
 }
+
+namespace {
+
+// Halvings of `width_m` that put kMinResolvedStrips strips across the narrowest counted patch of `contact`
+// (at least one), or 0 where the finest such width is below kMinStripWidth_m.
+int halvings_to_resolve(const WheelContact& contact, ContactMethod method, double width_m) {
+  const double strips = min_resolved_strips(patch_extents(contact), method, width_m);
+  int halvings = std::isfinite(strips) && strips > 0.0
+                     ? std::max(1, static_cast<int>(std::ceil(std::log2(kMinResolvedStrips / strips) - 1e-9)))
+                     : 1;
+  while (halvings > 0 && std::ldexp(width_m, -halvings) < kMinStripWidth_m) --halvings;
+  return halvings;
+}
+
+// An under-resolved wheel (fewer than kMinResolvedStrips strips across a counted patch) solved again, cold, at the
+// halving of its strip width the narrowest patch asks for, and once more halved while a solve stays under-resolved,
+// down to kMinStripWidth_m: the status stays where that width cannot resolve the patch. The warm start is left as
+// the solve at the configured width made it, so the chain continues at that width.
+void refine_strip_width(const SweepSetup& setup, double shift_m, double roll_rad, double load_value,
+                        WheelContactWorkspace& workspace, CaseWheel& out) {
+  WheelRailOptions options = setup.options;
+  options.method = out.choice.method;
+  double width_m = out.choice.strip_width_m;
+  while (out.contact.status == SolveStatus::UnderResolved) {
+    const int halvings = halvings_to_resolve(out.contact, options.method, width_m);
+    if (halvings == 0) return;
+    width_m = std::ldexp(width_m, -halvings);
+    options.mim1d.strip_width_m = width_m;
+    WheelContact finer = solve_wheel_contact(*setup.side, shift_m, roll_rad, setup.E_star_Pa, setup.load_kind,
+                                             load_value, options, workspace);
+    ++out.choice.solves;
+    out.choice.matrix_entries += finer.matrix_entries;
+    // a failure (or a contact lost at the finer width) keeps the coarser usable solution
+    if (finer.status != SolveStatus::Converged && finer.status != SolveStatus::UnderResolved) return;
+    out.contact = std::move(finer);
+    out.choice.strip_width_m = width_m;
+  }
+}
+
+}  // namespace
 
 CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
                            double load_value, WheelContactWorkspace& workspace, Mim1dWarmStart* warm_start) noexcept {
@@ -35,6 +77,8 @@ CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy
                                               setup.options, workspace)
                         : solve_wheel_contact(*setup.side, shift, angle, setup.E_star_Pa, setup.load_kind, load_value,
                                               setup.options, workspace, *warm_start);
+    if (roll.converged && setup.refine_under_resolved)
+      refine_strip_width(setup, shift, angle, load_value, workspace, out);
     if (!roll.converged) {
       if (warm_start != nullptr) warm_start->clear();
       out.contact.status = SolveStatus::MaxIterations;

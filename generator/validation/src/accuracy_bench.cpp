@@ -217,7 +217,9 @@ SweepSetup wheelrail_setup(const TableConfig& profiles, const Rung& rung) {
   config.strip_width_m = rung.width_m;
   config.least_model = rung.tolerance > 0.0;
   if (config.least_model) config.tolerance = rung.tolerance;
-  return make_sweep_setup(config);
+  SweepSetup setup = make_sweep_setup(config);
+  setup.refine_under_resolved = false;  // each rung at its own strip width
+  return setup;
 }
 
 WheelContact solve_right_wheel(const SweepSetup& setup, double dy_m) {

@@ -44,23 +44,21 @@ void add_patch(WheelCase& c, const PatchProblem& p, const PatchSolution& ps) {
   out.y_cop_rail_m = interpolate(p.gap.y_m, p.rail_y, ps.centre_of_pressure_y_m);
   out.s_min_m = ps.y_min_m;
   out.s_max_m = ps.y_max_m;
-  // Planar contact angle: direction of the resultant normal force, the load-weighted mean of the rail normals.
-  double weighted_angle = 0.0, weighted_y = 0.0;
+  double weighted_y = 0.0;
   for (const StripSolution& st : ps.strips) {
     const double y = interpolate(p.gap.y_m, p.rail_y, st.y_m);
     out.strips.push_back({st.y_m, y, st.half_length_m, st.p0_Pa});
-    weighted_angle += st.load_N * std::atan(c.side.rail().at(y).dz);
     weighted_y += st.load_N * y;
   }
-  out.contact_angle_rad = weighted_angle / ps.normal_force_N;
   c.result.normal_force_N += out.normal_force_N;
   const ForceComponents force = run_force(p, ps);
   out.force_lateral_N = force.lateral_N;
   out.force_vertical_N = force.vertical_N;
+  // Contact angle on both surfaces: the direction of the patch's resultant normal force, the sum of the strips'
+  // loads along their normals (planar: every strip has the plane's normal, so it equals plane_angle_rad).
+  out.contact_angle_rad = std::atan2(-force.lateral_N, force.vertical_N);
   if (c.options.surface == ContactSurface::Conformal) {
-    // Conformal: the resultant of the strips' own normals, and CONTACT's y_cop_rail (sum q_i y_i / sum q_i over the
-    // strips' points on the curved surface).
-    out.contact_angle_rad = std::atan2(-force.lateral_N, force.vertical_N);
+    // CONTACT's y_cop_rail (sum q_i y_i / sum q_i over the strips' points on the curved surface).
     out.y_cop_rail_m = weighted_y / ps.normal_force_N;
     out.s_origin_y_rail_m = interpolate(p.gap.y_m, p.rail_y, 0.0);
   }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ctab/contact/resolution.hpp"
+#include "ctab/wheelrail/patch_extents.hpp"
 #include "wheel_case.hpp"
 
 namespace ctab::gen {
@@ -15,8 +16,5 @@ namespace ctab::gen {
 
 //! The gap minima that no patch holds and the approach does not close.
 void collect_near_misses(WheelCase& c);
-
-//! The loaded patches' extents in their contact planes (resolution.hpp).
-[[nodiscard]] std::vector<PatchExtent> patch_extents(const WheelContact& result);
 
 }  // namespace ctab::gen

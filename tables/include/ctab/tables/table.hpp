@@ -73,9 +73,8 @@ struct PatchQuantities {
   std::vector<double> area_m2;           //!< [m^2]
   std::vector<double> max_pressure_Pa;   //!< [Pa]
   std::vector<double> approach_m;        //!< normal approach of the patch [m]
-  //! Direction of the resultant normal force as reported by the solver: the load-weighted mean rail inclination
-  //! over the patch's strips (< 0 on the gauge side). The force components use plane_angle_rad instead
-  //! (lateral = -N sin(plane), vertical = N cos(plane)); the two angles differ on a curved patch [rad]
+  //! Direction of the patch's resultant normal force, atan2(-force_lateral_N, force_vertical_N) (< 0 on the gauge
+  //! side): on a planar surface equal to plane_angle_rad, on a conformal one the strips' normals summed [rad]
   std::vector<double> contact_angle_rad;
   std::vector<double> plane_angle_rad;    //!< inclination of the contact plane in which s is measured [rad]
   std::vector<double> s_origin_y_rail_m;  //!< rail point where s = 0 (lateral) [m]

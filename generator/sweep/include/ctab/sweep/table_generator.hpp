@@ -57,6 +57,9 @@ struct SweepSetup {
   std::vector<double> dy_axis_m;
   bool mirrored = false;
   bool warm_start = false;
+  //! Whether an under-resolved wheel is solved again at a finer strip width (solve_case_wheel); a bench that
+  //! measures a rung at its own strip width turns it off.
+  bool refine_under_resolved = true;
 };
 
 //! An InputError of make_sweep_setup that also tells which config key was wrong and why, so that a caller whose
@@ -94,7 +97,9 @@ struct CaseWheel {
   bool exception = false;  //!< the solver threw (tables::CaseStatus::SolverException)
   AutoChoice choice;       //!< the method and strip width that solved it (the least model's choice, or the config's)
 };
-//! With `warm_start`, MIM-1D starts from it and leaves this case's solution in it (solve_wheel_contact).
+//! With `warm_start`, MIM-1D starts from it and leaves this case's solution in it (solve_wheel_contact). An
+//! under-resolved result is solved again, cold, at a finer strip width (SweepSetup::refine_under_resolved; the
+//! width used is in `choice`).
 [[nodiscard]] CaseWheel solve_case_wheel(const SweepSetup& setup, std::size_t wheel, double dy_m, const CaseRoll& roll,
                                          double load_value, WheelContactWorkspace& workspace,
                                          Mim1dWarmStart* warm_start = nullptr) noexcept;

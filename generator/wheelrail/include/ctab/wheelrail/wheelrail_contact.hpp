@@ -15,8 +15,8 @@
 //! that each strip sees the vertical shift along its own normal, dz cos(delta_w)/cos(delta_w - alpha) at a wheel
 //! surface of inclination delta_w, not a uniform dz cos(delta_ref): the strip solver's scalar approach is
 //! dz cos(delta_ref) and the rest is part of h. With several patches the vertical approach is found by a
-//! safeguarded root finder. A planar patch's contact angle is the load-weighted mean of the rail inclination over
-//! its strips (on a curved patch steeper than the inclination at the centre of pressure).
+//! safeguarded root finder. A patch's contact angle is the direction of its resultant normal force (planar: the
+//! plane's inclination).
 //!
 //! Conformal surface (WheelRailOptions::surface, CONTACT's conformal approach D = 4): instead of the plane, a
 //! curved surface midway between rail and wheel, marched from the reference point: each surface point lies midway
@@ -57,8 +57,8 @@ struct ContactPatch {
   double max_pressure_Pa = 0.0;
   double approach_m = 0.0;       //!< normal approach of the patch [m]
   double plane_angle_rad = 0.0;  //!< reference angle: the rail slope at the reference point (planar: the plane) [rad]
-  //! Direction of the resultant normal force [rad]: planar, the load-weighted rail inclination; conformal,
-  //! atan2(-force_lateral_N, force_vertical_N).
+  //! Direction of the resultant normal force, atan2(-force_lateral_N, force_vertical_N), on both surfaces (planar:
+  //! equal to plane_angle_rad, every strip having the plane's normal) [rad].
   double contact_angle_rad = 0.0;
   double y_rail_m = 0.0;                //!< contact reference point (deepest rigid point) on the rail [m]
   double y_wheel_m = 0.0;               //!< the same on the wheel, origin at the tape circle [m]
