@@ -113,10 +113,13 @@ TEST(AdaptiveAxis, JumpsAreLocatedToOneMicrometreWithOneSidedValues) {
     EXPECT_LE(high - low, tables::kJumpCellWidth_m) << "jump at " << low;
     const std::size_t a = t.patch_index(j.i_dy, j.i_second, j.wheel, j.slot);
     const std::size_t b = t.patch_index(j.i_dy + 1, j.i_second, j.wheel, j.slot);
-    if (j.kind == tables::JumpKind::Appears) EXPECT_TRUE(t.patch.present[a] == 0 && t.patch.present[b] == 1);
-    if (j.kind == tables::JumpKind::Disappears) EXPECT_TRUE(t.patch.present[a] == 1 && t.patch.present[b] == 0);
-    if (j.kind == tables::JumpKind::Moves)
+    if (j.kind == tables::JumpKind::Appears) {
+      EXPECT_TRUE(t.patch.present[a] == 0 && t.patch.present[b] == 1);
+    } else if (j.kind == tables::JumpKind::Disappears) {
+      EXPECT_TRUE(t.patch.present[a] == 1 && t.patch.present[b] == 0);
+    } else {
       EXPECT_GT(std::abs(t.patch.y_rail_m[b] - t.patch.y_rail_m[a]), tables::jump_move_threshold(1e-5));
+    }
   }
   EXPECT_EQ(t.cell_error.size(), (t.n_dy() - 1) * tables::kCellErrorQuantities);
   EXPECT_EQ(t.number_attributes.at("tolerance_contact_point_m"), 1e-5);
