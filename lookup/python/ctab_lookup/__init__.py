@@ -66,6 +66,8 @@ _MIRRORED = {"ctab_open_options": _Options, "ctab_patch": _Patch, "ctab_location
 
 
 def _check_struct_sizes(lib, path):
+    if not hasattr(lib, "ctab_struct_size"):
+        raise OSError("%s: no ctab_struct_size: a library older than this module" % path)
     lib.ctab_struct_size.argtypes = [ctypes.c_char_p]
     lib.ctab_struct_size.restype = ctypes.c_size_t
     for name, mirror in _MIRRORED.items():
