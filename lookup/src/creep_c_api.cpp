@@ -1,4 +1,4 @@
-// The C API of the creep forces (ctab_lookup.h, "Creep forces").
+// The C API of the creep forces (ctab_lookup.h, "Creep forces") and ctab_struct_size for bindings.
 #include <cstring>
 
 #include "c_handle.hpp"
@@ -68,6 +68,20 @@ ctab_status ctab_kalker_coefficients(double a_m, double b_m, double poisson_rati
   out[2] = ok ? c.c23 : 0.0;
   out[3] = ok ? c.c33 : 0.0;
   return ok ? CTAB_OK : CTAB_INVALID_INPUT;
+}
+
+size_t ctab_struct_size(const char* name) {
+  if (name == nullptr) return 0;
+  const struct {
+    const char* name;
+    size_t size;
+  } sizes[] = {{"ctab_open_options", sizeof(ctab_open_options)}, {"ctab_patch", sizeof(ctab_patch)},
+               {"ctab_location", sizeof(ctab_location)},         {"ctab_result", sizeof(ctab_result)},
+               {"ctab_blob_info", sizeof(ctab_blob_info)},       {"ctab_creep_input", sizeof(ctab_creep_input)},
+               {"ctab_creep_patch", sizeof(ctab_creep_patch)},   {"ctab_creep_result", sizeof(ctab_creep_result)}};
+  for (const auto& entry : sizes)
+    if (std::strcmp(entry.name, name) == 0) return entry.size;
+  return 0;
 }
 
 }  // extern "C"

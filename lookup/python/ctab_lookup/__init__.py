@@ -11,11 +11,14 @@ Where the libraries are looked for, and the CTAB_LOOKUP_LIBRARY override: _libra
         print(r.status, r.patches[0]["normal_force_N"])
         batch = table.query_batch(numpy.linspace(-5e-3, 5e-3, 100000))  # numpy arrays, one C call
         print(batch["normal_force_N"][:, 0])
+        c = table.creep(2e-3, math.nan, "right", 1e-3, 0.0, 0.0, 0.3)  # creep forces, method="carter"
+        print(c.status, c.fx_N, c.patches[0]["slip_fraction"])
 """
 import ctypes
 import math
 import os
 
+from . import _creep
 from . import _library
 
 MAX_SLOTS = 16
@@ -54,9 +57,31 @@ class _Options(ctypes.Structure):
     _fields_ = [("interpolation", ctypes.c_int32), ("single_precision", ctypes.c_int32)]
 
 
+_CreepResult = _creep.result_type(MAX_SLOTS)
+CREEP_METHODS = _creep.METHODS
+# The structs mirrored here and their C names: load_library checks each size against ctab_struct_size.
+_MIRRORED = {"ctab_open_options": _Options, "ctab_patch": _Patch, "ctab_location": _Location, "ctab_result": _Result,
+             "ctab_blob_info": _BlobInfo, "ctab_creep_input": _creep.CreepInput,
+             "ctab_creep_patch": _creep.CreepPatch, "ctab_creep_result": _CreepResult}
+
+
+def _check_struct_sizes(lib, path):
+    if not hasattr(lib, "ctab_struct_size"):
+        raise OSError("%s: no ctab_struct_size: a library older than this module" % path)
+    lib.ctab_struct_size.argtypes = [ctypes.c_char_p]
+    lib.ctab_struct_size.restype = ctypes.c_size_t
+    for name, mirror in _MIRRORED.items():
+        size = lib.ctab_struct_size(name.encode())
+        if size != ctypes.sizeof(mirror):
+            raise OSError("%s: %s is %d bytes in the library, %d in ctab_lookup (module and library of different "
+                          "versions?)" % (path, name, size, ctypes.sizeof(mirror)))
+
+
 def load_library(path=None, hdf5=False):
     """The C library with its prototypes declared: `path`, else the one _library.find(hdf5) finds."""
-    lib = _library.load(path or _library.find(hdf5))
+    path = path or _library.find(hdf5)
+    lib = _library.load(path)
+    _check_struct_sizes(lib, path)
     P, c = ctypes.POINTER, ctypes
     lib.ctab_table_open.argtypes = [c.c_char_p, P(_Options), P(c.c_void_p)]
     lib.ctab_table_open.restype = c.c_int
@@ -97,7 +122,7 @@ def load_library(path=None, hdf5=False):
     if hasattr(lib, "ctab_table_open_hdf5"):
         lib.ctab_table_open_hdf5.argtypes = lib.ctab_table_open.argtypes
         lib.ctab_table_open_hdf5.restype = c.c_int
-    # Further C functions (the creep forces of ctab_lookup.h's creep section) are declared here.
+    _creep.declare(lib, _Location, _CreepResult)
     return lib
 
 
@@ -238,3 +263,27 @@ class Table:
         if status < 0:
             raise ValueError(self._lib.ctab_status_message(status).decode())
         return list(s[:count.value]), list(a[:count.value]), list(p0[:count.value])
+
+    def creep(self, dy_m, second, wheel, xi, eta, phi_per_m, friction, method="carter",
+              youngs_modulus_Pa=_creep.DEFAULT_YOUNGS_MODULUS_PA, poisson_ratio=_creep.DEFAULT_POISSON_RATIO,
+              cells=0):
+        """Creep forces of every patch of one wheel at (dy_m, second) (ctab_creep_prelooked): a Creep with status,
+        totals and patches. Creepages as CONTACT's (docs/creep.md); method "carter" (default), "ellipse", "linear"
+        or "strips"; cells per strip 0 = 16. NaN creepages or friction <= 0: status "invalid-input", zeros."""
+        where, out = _Location(), _CreepResult()
+        self._lib.ctab_prelookup(self._handle, dy_m, second, ctypes.byref(where))
+        given = _creep.make_input(xi, eta, phi_per_m, friction, method, youngs_modulus_Pa, poisson_ratio, cells)
+        self._lib.ctab_creep_prelooked(self._handle, ctypes.byref(where), self._wheel(wheel), ctypes.byref(given),
+                                       ctypes.byref(out))
+        return _creep.Creep(out, STATUS)
+
+    def creep_batch(self, dy_m, second, wheel, xi, eta, phi_per_m, friction, method="carter",
+                    youngs_modulus_Pa=_creep.DEFAULT_YOUNGS_MODULUS_PA, poisson_ratio=_creep.DEFAULT_POISSON_RATIO,
+                    cells=0):
+        """N creep calls in one C call (ctab_creep_batch); array-likes broadcast together (`wheel` "right",
+        "left", 0, 1 or an int array). A dict of numpy arrays: "status" (N), the totals "fx_N", "force_lateral_N",
+        "force_vertical_N", "mz_Nm" (N), per slot "slot_fx_N", "slot_fs_N", ..., "present", "slot_status"
+        (N, slots), and "raw" (the C structs)."""
+        wheel = self._wheel(wheel) if isinstance(wheel, (str, int)) else wheel
+        return _creep.run_batch(self._lib, self._handle, _CreepResult, self.n_slots, dy_m, second, wheel,
+                                (xi, eta, phi_per_m, friction), (method, youngs_modulus_Pa, poisson_ratio, cells))

@@ -35,6 +35,20 @@ def main():
             assert r.status == "ok" and 1 in r.patches and r.patches[1]["normal_force_N"] > 0
             s, a, p0 = table.strip_profile(2e-3, 0, 60e3)
             assert len(s) == 5 and s[0] < s[-1]
+            c = table.creep(2e-3, 60e3, "right", 1e-3, 0.0, 0.0, 0.3)
+            b = table.creep_batch([2e-3], 60e3, "right", 1e-3, 0.0, 0.0, 0.3)
+            assert c.status == "ok" and c.patches and bytes(b["raw"][0]) == bytes(c.raw), "creep"
+            c = table.creep(2e-3, 60e3, "right", math.nan, 0.0, 0.0, 0.3)
+            assert c.status == "invalid-input" and not c.patches and c.fx_N == 0.0
+    lib = ctab_lookup.load_library(library)  # checks every mirrored struct's size against ctab_struct_size
+    assert lib.ctab_struct_size(b"ctab_creep_result") == 1064 and lib.ctab_struct_size(b"no_such_struct") == 0
+    ctab_lookup._MIRRORED["ctab_creep_input"] = ctab_lookup._Patch  # a mirror of the wrong size must not load
+    try:
+        ctab_lookup.load_library(library)
+        raise AssertionError("a struct of the wrong size must fail the load")
+    except OSError as error:
+        assert "ctab_creep_input is 56 bytes in the library" in str(error), str(error)
+    ctab_lookup._MIRRORED["ctab_creep_input"] = ctab_lookup._creep.CreepInput
     try:
         ctab_lookup.Table("/nonexistent.blob", library=library)
         raise AssertionError("opening a missing file must fail")

@@ -255,6 +255,10 @@ CTAB_API ctab_status ctab_creep_strips(const double* s_m, const double* half_len
                                        uint32_t n, double normal_force_N, double plane_angle_rad,
                                        const ctab_creep_input* input, ctab_creep_patch* out);
 
+/* sizeof the public struct of that name ("ctab_result", "ctab_creep_input", ...); 0 for an unknown name. For
+ * bindings that mirror the structs: the Python wrapper checks its own against these when it loads the library. */
+CTAB_API size_t ctab_struct_size(const char* name);
+
 /* Kalker's linear-theory creepage coefficients C11, C22, C23, C33 (out[0..3]) for semi-axes a (rolling) and b
  * and Poisson's ratio nu (Kalker 1990, Table E.3; linear in a/b or b/a, quadratic in nu on the reciprocals;
  * ratios beyond 10 are clamped). CTAB_INVALID_INPUT on a bad argument. */
