@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # CTAB_FUZZ: every target of this build with AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer's coverage
 # instrumentation (fuzzer-no-link: the libraries get no main of their own), the fuzz targets of fuzz/ linked with
 # libFuzzer. Clang only: GCC has no libFuzzer.

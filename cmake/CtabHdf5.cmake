@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctab_hdf5: the HDF5 C library as this build links it (ctab::tables privately, the tests that write HDF5 files).
 #
 # With CTAB_STATIC_HDF5 (default in our own build) and Debian's archive beside the shared library (libhdf5-dev ships

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The installed CMake package `ctab`: libraries, headers and ctabConfig.cmake with namespaced targets ctab::NAME.
 #
 # A library joins the package in two calls, then the top-level CMakeLists.txt writes the package once:

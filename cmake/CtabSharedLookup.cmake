@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctab_shared_lookup(TARGET OUTPUT_NAME SOURCE...): a shared library of the lookup's C API for C programs, dlopen
 # and the Python module: libOUTPUT_NAME.so.SOVERSION (SONAME), VERSION the project's.
 #

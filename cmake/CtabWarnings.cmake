@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Warnings live in a non-exported INTERFACE target, linked PRIVATE by our own targets.
 add_library(ctab_warnings INTERFACE)
 target_compile_options(ctab_warnings INTERFACE

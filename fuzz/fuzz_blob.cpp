@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the blob loader (ctab_table_open_memory) and queries on whatever loads. Each input is loaded
 // twice: as given (header, sizes and checksum checks), and with its header's payload size and checksum made to
 // match (so that mutations reach the checks of the contents behind the checksum). A table that loads is queried

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fuzz targets' scratch file: readers that take a path get the fuzz input through one file per process, in
 // $TMPDIR (/dev/shm when unset, so that a million executions write to memory, not to a disk).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the gap CSV reader (generator/io gap_csv.hpp) on any text. InputError is the reader's answer
 // to a bad file; anything else (another exception, a crash, a sanitizer report) is a finding.
 #include <cstdint>

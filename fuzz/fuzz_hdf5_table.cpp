@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: ctab's HDF5 table reader behind the trust boundary (docs/fuzzing.md). Raw bytes never reach
 // libhdf5 (which may crash on a damaged file: outside the boundary). The input is decoded into a well-formed HDF5
 // file instead: a small table written by ctab's writer, then edits of its values (any double, status, presence or

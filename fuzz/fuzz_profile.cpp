@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the profile readers (generator/io profile_io.hpp), every format. The first byte picks the
 // format (by the file name's extension, as the reader does), the role and the options; the rest is the file. Point
 // files with few points are also smoothed and tabulated (load_profile), as `ctab generate` does. InputError is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the TOML table config (generator/sweep parse_table_config) on any text. InputError is the
 // parser's answer to a bad config; anything else is a finding.
 #include <cstdint>

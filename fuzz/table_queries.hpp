@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Queries of a loaded table for the fuzz targets of the blob and HDF5 loaders: whatever a table that loads holds,
 // no query may crash or read out of bounds.

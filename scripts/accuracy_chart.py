@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Chart of `ctab bench accuracy`: time per case (log x) against error (log y), one panel per scene/region.
 
 One marker per method and discretisation (the least model "auto": a star labelled with its tolerance), a horizontal

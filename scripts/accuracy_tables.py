@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """README tables of `ctab bench accuracy` (docs/method.md "The method ladder"): worst error against the reference with time per
 case, and the worst deviation from CONTACT (area / max pressure / centre of pressure), one column per rung at
 0.2 mm (Hertz: its one ellipse; auto: its tolerance).

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Chart of the tangential ladder (`ctab bench accuracy --creep DIR` writes the CSV): creep curves |Fx|/muN against
 xi per lateral shift (planar), ctab's rungs against CONTACT, and error against time per rung.
 Usage: /usr/bin/python3 scripts/creep_chart.py CREEP_CSV PREFIX  (writes PREFIX.png and PREFIX.svg)"""

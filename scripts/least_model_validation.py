@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Validation of the least model (docs/validation.md "The least model"): the S1002/UIC60 sweep dy -6 ... +8 mm in 0.1 mm,
 single wheel, 78.5 kN normal force, with the built-in and the Manchester profiles. For each set it generates three
 tables with `ctab generate --threads 1`: MIM-1D at 0.05 mm (the reference), MIM-1D at 0.2 mm and `method = "auto"`

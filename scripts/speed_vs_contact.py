@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """ctab's speed against CONTACT and the paper's Matlab MIM-1D (the docs/performance.md tables).
 
 ctab's figures come from `ctab bench solver --json` and `ctab bench wheelrail --json`: run here (--runs times)

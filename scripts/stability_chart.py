@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Picture of `ctab bench stability`: where each method fails. A grid of scenes (rows) x methods (columns); each
 cell is a bar of its cases, coloured by outcome from "within ctab's claimed error bound" to "failed", with the
 worst error of its converged cases (and of its under-resolved ones) written in it.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """README table of `ctab bench stability`: per scene and method the worst error (larger of area and max pressure
 against the scene's reference) where the smallest loaded patch spans at least 8 strips, in brackets the worst where
 it spans fewer (under-resolved; not for Hertz, one ellipse), and every status other than converged / under-resolved with its count.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Wall time of whole processes, interleaved: wall_time.py BIN1[,BIN2...] ARGS... runs each binary with ARGS,
 N times in turn (N from the environment, default 15), and prints each binary's minimum and median [s]. An entry
 BIN:EXTRA runs BIN with ARGS EXTRA (the same binary on two configs: `build/bin/ctab,build/bin/ctab:planar.toml

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The FMI 3.0 functions the wrapper supports: Co-Simulation instantiation, the initialization and step sequence,
 // and Float64, Int32 and Boolean access. Set, Get and DoStep neither allocate nor lock.
 #include <cmath>

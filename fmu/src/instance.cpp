@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Creating, loading and querying an FMU instance (instance.hpp).
 #include "instance.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One FMU instance of the wrapper: the loaded table, the inputs, both wheels' last results (normal and creep) and
 // the FMI state. All memory is taken at instantiation; Set, Get and DoStep only read and write these members.

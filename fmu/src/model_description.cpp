@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // modelDescription.xml writer (model_description.hpp).
 #include "model_description.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // modelDescription.xml of a table's FMU (FMI 3.0, section 2.4 "FMI Description Schema"): Co-Simulation, the units
 // the variables use, the variables of variables.hpp for this table, and the model structure.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The FMU archive of a table (export.hpp): the wrapper found beside the executable, the description, the blob.
 #include <unistd.h>
 

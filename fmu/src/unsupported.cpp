@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The FMI 3.0 functions this FMU does not support (Model Exchange, Scheduled Execution, event mode, FMU state,
 // derivatives, clocks) and the access functions of types it has no variables of: each logs why and returns
 // fmi3Error (instantiation returns NULL), as the standard requires of every exported function.

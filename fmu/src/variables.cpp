@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The FMU's variable descriptors (variables.hpp): names, units and descriptions of every input and output.
 #include "ctab/fmu/variables.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ZIP archive writer (zip_writer.hpp).
 #include "zip_writer.hpp"
 

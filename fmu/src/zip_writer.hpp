@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A minimal ZIP archive writer (PKWARE APPNOTE 6.3: local headers, central directory, end record; no ZIP64):
 // entries deflated with zlib where that makes them smaller, stored otherwise, with CRC-32 and a fixed time stamp

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench accuracy [--out DIR] [--quick] [--reference DIR] [--wheel F --rail F --inclination I]`: the accuracy
 // bench (ctab/validation/accuracy_bench.hpp) with CONTACT's wheel-rail summary from --reference DIR. Writes
 // DIR/accuracy.csv (one row per scene x region x method x discretisation) and charts it with scripts/accuracy_chart.py

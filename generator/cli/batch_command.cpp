@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab batch MANIFEST.toml -o DIR`: one table per profile pair of a manifest (batch_manifest.hpp), each written
 // atomically, plus DIR/index.csv with each pair's status, case counts and hashes. Resumes: a pair whose table is
 // already in DIR, complete and made by this ctab build from the same config and profiles, is not solved again.

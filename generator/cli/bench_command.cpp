@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench solver|wheelrail|generate [--json]`: ctab's own speed figures (strips, iterations, mean, min,
 // median, worst per row). Comparisons with CONTACT and the paper live in scripts/speed_vs_contact.py, which reads
 // the --json output: no reference times of other programs in the binary.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! A progress line on stderr for the long benchmarks (`ctab bench lookup`, `bench generate`): "label: k/n runs",
 //! redrawn in place on a terminal (the cursor left at its start, so that the figures overwrite it); with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Timing statistics of `ctab bench`: one operation run repeatedly on the calling thread, summarised as sample
 //! count, mean, min, median and worst wall time [s]. ctab's own figures only: reference times of other programs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Subcommands of the `ctab` executable. Each registers its options on the app and runs when selected.
 #include <CLI/CLI.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab config --print-default` prints the embedded default config; `ctab config FILE.toml` checks a config.
 #include <cstdio>
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! `ctab bench accuracy --creep DIR`: the tangential ladder against CONTACT (ctab/validation/creep_validation.hpp)
 //! into OUT/creep.csv and a summary on stdout (chart: scripts/creep_chart.py OUT/creep.csv OUT/creep).

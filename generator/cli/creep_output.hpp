@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The creep options of `ctab solve` and `ctab query` (--creepage XI,ETA,PHI --friction MU [--creep-method M]) and
 //! their output: the creep forces of each patch (docs/creep.md), with the strip method's traction per strip.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! How a command's exceptions become exit codes (exit_codes.hpp) and messages on stderr: shared by the main process
 //! and the child processes that read HDF5 inputs (isolated_read.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Exit codes of the ctab executable (docs/cli.md "Exit codes") and the error that maps to the I/O code.
 #include "ctab/core/error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab export FILE --format blob|c-header|fmu -o OUT [--single-precision] [--name IDENT]`: a table (HDF5 or blob)
 // as a lookup blob, as a C header of constant arrays (targets without HDF5 or a file system), or as an FMI 3.0
 // Co-Simulation FMU (docs/fmu.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab generate [CONFIG.toml] [-o FILE.h5]`: the parallel table generator (the main job of `make run`).
 #include <unistd.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab geometry`: rigid contact geometry versus lateral shift as CSV, contact jumps, equivalent conicity.
 #include <algorithm>
 #include <cmath>

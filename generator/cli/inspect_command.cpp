@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab inspect FILE [--json]`: validate a table and print its schema, provenance, axes, statuses, patches per
 // slot and the contact jumps stored in the file.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The CLI's trust boundary for HDF5 inputs (docs/security.md): libhdf5 itself may crash or hang on a corrupted
 //! file, so every command that reads an HDF5 file the user gives runs that part in a forked child process with a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench knee [--out DIR] [--from M --to M --step M] [--reference-width M] [--reference-length M] [--load N]...
 // [set-up options]`:
 // the knee sweep (ctab/validation/knee_sweep.hpp). The candidate is --method (mim1d at --strip-width, or auto at

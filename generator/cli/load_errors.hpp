@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! A failed table load as the CLI reports it: out of memory is a resource failure (exit 3), anything else is an
 //! input error (exit 2); the message is the loader's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench lookup FILE`: time per query of one wheel (all slots, all quantities) over random points, with and
 // without the prelookup reused for both wheels; median, p99.99, max per repetition; memory per table; the
 // largest difference of single-precision storage against double.

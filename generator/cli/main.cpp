@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ctab: wheel-rail contact tables. One executable, subcommands; exceptions stop here and become exit codes
 // (exit_codes.hpp): 0 success, 2 usage or input error, 3 I/O failure, 4 failed solves or table cases.
 #include <CLI/CLI.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab merge SHARD.h5... -o TABLE.h5`: joins the shard files of `ctab generate --shard K/N` into the table a
 // single run gives (generator/sweep/include/ctab/sweep/table_shard.hpp).
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `mpirun -n R ctab generate`: work units handed out by rank 0, packed rows gathered to it (mpi_generate.hpp).
 #include "mpi_generate.hpp"
 

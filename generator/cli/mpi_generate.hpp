@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! `mpirun -n R ctab generate ...` (and `batch`): the sweep across MPI ranks (hybrid MPI x OpenMP), built with CTAB_WITH_MPI.
 //!

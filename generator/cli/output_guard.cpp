@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "output_guard.hpp"
 
 #include "ctab/fmu/export.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Safety of `-o OUTPUT` (generate, merge, batch, export): what may be replaced, checked before any work, and no
 //! temporary file left behind by an interrupt.

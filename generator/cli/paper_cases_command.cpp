@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab paper-cases`: the main job for now — the paper's theoretical cases against Hertz and CONTACT.
 #include <cstdio>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab query FILE --dy METRES [--load N | --approach M] [--wheel left|right] [--pchip] [--strips] [--json]
 // [--creepage XI,ETA,PHI --friction MU]`:
 // one lookup, as a HIL target would make it, printed as text or JSON.

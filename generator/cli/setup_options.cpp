@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "setup_options.hpp"
 
 #include <omp.h>

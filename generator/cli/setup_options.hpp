@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The one option model of `solve`, `geometry` and `generate`: the wheel-rail set-up options fill the same
 //! gen::TableConfig that a TOML config fills, starting from the embedded default config (gen::kDefaultTableConfig),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! JSON form of a NormalSolution (SI units; the key names carry the unit).
 #include <nlohmann/json.hpp>

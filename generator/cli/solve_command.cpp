@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab solve`: one normal-contact problem: a gap profile (--gap), a wheel-rail case from options (--dy with the
 // set-up options) or one case of a table config (--config FILE --dy [--load]), solved as the generator does.
 #include <cmath>

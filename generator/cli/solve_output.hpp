@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Output of `ctab solve`: readable summaries and JSON of a gap-profile solution and of a wheel-rail case, and the
 //! one-line stderr report of every wheel that did not succeed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench stability [--out DIR] [--quick] [--scene NAME]... [--strip-width W]`: the stability matrix
 // (ctab/validation/stability_matrix.hpp): every rung on hard scenes. Writes DIR/stability.csv (one row per case x
 // method) and prints per scene and method: cases, statuses, worst error against the reference, worst time. Exit 4 when

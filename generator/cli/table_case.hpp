@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! What `ctab solve` adds to the sweep's per-case API (gen::make_sweep_setup, gen::solve_table_case in
 //! ctab/sweep/table_generator.hpp, the same code `ctab generate` runs): set-up errors that name command-line

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! What `generate`, `batch` and `merge` share when they write tables: the progress display and the checked write.
 #include <chrono>

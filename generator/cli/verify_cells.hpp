@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! `ctab verify`'s sample points (docs/cli.md "verify"): the table's cells sorted into classes from the stored
 //! nodes alone, and random off-grid points drawn from every class.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab verify TABLE [--samples N] [--seed S] [--threads T] [--json]`: the table's linear lookup against direct
 // solves at random off-grid points in every class of cell (verify_cells.hpp), solved from the table's own config
 // text as `ctab solve --config` solves it; exit 4 when a point exceeds the table's stated tolerance.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! `ctab verify`'s measures (docs/cli.md "verify"): one lookup result against the direct solve of the same point,
 //! and their distribution over a class of points.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Version, commit, compiler and flags of this build (ctab/build_info.hpp, configured by CMake); "unknown" when
 // built otherwise.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* A fixed-step hardware-in-the-loop style loop over the C API: 4 wheelsets (8 wheels) at 1 kHz, each wheelset
  * oscillating laterally through the flange jump, for a given simulated time. One prelookup per wheelset, reused
  * for both wheels; per wheel the normal contact and the creep forces (FASTSIM on the strips, mu 0.3) from simple

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Plot an interpolated sweep over a contact table through the C library (what a HIL target computes).
 
     /usr/bin/python3 lookup/python/example_sweep.py TABLE.blob [-o sweep.png] [--wheel right|left]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ctab_query_batch: n points of one wheel in one call, into flat caller-owned arrays (the Python wrapper's numpy
 // arrays). Each point is ctab_query's answer; the batch adds no allocation.
 #include <cstring>

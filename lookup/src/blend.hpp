@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The blending rules of docs/method.md "Tables: sweep, slots, jumps, refined axis", branch-free: weights of the two dy neighbours of one slot from its cell
 // rule, and of the two second-axis rows from the rows' presence.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Blob writer: explicit little-endian encoding (independent of the host's byte order), FNV-1a 64 of the payload
 // (the reader: blob_read.cpp).
 #include <cstring>

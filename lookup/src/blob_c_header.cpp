@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The blob as a C header of constant arrays (ctab export --format c-header).
 #include <cstdio>
 

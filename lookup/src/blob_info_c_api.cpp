@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C query of a blob's header (ctab_blob_info_*): which format and schema a blob carries, before loading it.
 #include <cstdio>
 #include <cstring>

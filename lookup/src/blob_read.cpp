@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Blob reader: header (magic, versions, reserved bytes, size), counts checked against the size limit and the exact
 // payload size before anything is allocated, the FNV-1a 64 checksum before the payload is parsed, then the arrays
 // read straight into a TableData. A file is read in chunks: its bytes are never held whole.

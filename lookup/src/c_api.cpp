@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C API over ctab::lookup::Table (ctab_lookup.h).
 #include <cmath>
 #include <limits>

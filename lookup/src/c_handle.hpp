@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The opaque C handle and the one way to create it (shared by the core's and ctab_lookup_hdf5's C loaders).
 #include <new>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C API of the creep forces (ctab_lookup.h, "Creep forces") and ctab_struct_size for bindings.
 #include <cstring>
 

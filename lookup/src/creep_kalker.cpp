@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Kalker's linear-theory creepage coefficients: J.J. Kalker, "Three-dimensional elastic bodies in rolling contact",
 // Kluwer 1990, Table E.3 (first published in Kalker's thesis, Delft 1967). The interpolation is the one CONTACT's
 // linrol uses: linear in g = (shorter / longer axis) on each branch, quadratic in nu on the reciprocals.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The FASTSIM march (Kalker 1982, "A fast algorithm for the simplified theory of rolling contact", VSD 11:1-13):
 // traction p = -(displacement difference) / L grows from zero at the leading edge x = +a with the rigid slip
 // (xi - phi s, eta + phi x) and is cut back to the bound mu q0 (1 - x^2/a^2) where it would exceed it (slip).

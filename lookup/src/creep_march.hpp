@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The FASTSIM march shared by the strip and ellipse methods: strips of a patch in structure-of-arrays form,
 // marched from the leading edge (x = +a) to the trailing edge, all strips at once (the inner loop vectorises).

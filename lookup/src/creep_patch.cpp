@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One patch's creep forces: the patch's strips as given (CTAB_CREEP_STRIPS; CTAB_CREEP_STRIPS_CARTER with each
 // strip's march following Carter's strip), its equivalent ellipse marched the same way (CTAB_CREEP_FASTSIM_ELLIPSE),
 // or Kalker's linear theory on that ellipse (CTAB_CREEP_LINEAR).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Creep forces of one wheel at a prelooked point: each present slot's strip profile and normal force from the
 // table, then creep_patch; totals in the side frame.
 #include <cstring>

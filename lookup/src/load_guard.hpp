@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Loading is the only part of the lookup that allocates (query and strip profiles are built without exceptions):
 // an allocation that fails there becomes CTAB_ERR_OUT_OF_MEMORY instead of an exception through the C API.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Blob loading from memory or a file.
 #include <utility>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table::prelookup and Table::query: index search (dy: arithmetic on a uniform axis, on an adaptive one an index of
 // bounded size and a fixed-step binary search within an entry's cells; fixed-step binary search on the second axis) and interpolation of
 // every slot's record, with the blending rules of docs/method.md "Tables: sweep, slots, jumps, refined axis". No allocation; one

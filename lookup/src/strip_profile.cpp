@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table::strip_profile: a slot's resampled strip profile a(s), p0(s) at a prelooked point, blended sample by
 // sample with the same per-slot weights as the patch quantities (always linear in dy, also in PCHIP tables).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TableData: sizing and validation (axes, shapes, finite values, statuses, presence, jumps).
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table::load: copies a validated TableData into one aligned record per case (lookup/include/ctab/lookup/table.hpp)
 // and precomputes, per dy cell and slot, the blending rule (docs/method.md "Tables: sweep, slots, jumps, refined axis"), the dy index, and with PCHIP the
 // Fritsch-Carlson slopes at every node.

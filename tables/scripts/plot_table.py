@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Plot the main quantities of a ctab contact table (schema 2) against the lateral shift.
 
 Usage: /usr/bin/python3 tables/scripts/plot_table.py TABLE.h5 [-o TABLE.png]

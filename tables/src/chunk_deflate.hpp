@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // HDF5's shuffle + deflate filter pipeline applied to one chunk of a dataset outside the library, so that a table's
 // chunks can be compressed in parallel and stored with H5Dwrite_chunk. The bytes are those the library's own filters

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // HDF5 dimension scales of a table: the layout of the HDF5 Dimension Scale Specification 1.0 written with the core
 // API. A scale dataset carries CLASS = "DIMENSION_SCALE", NAME = its dimension's name and REFERENCE_LIST (the
 // datasets and dimensions it is attached to); a dataset carries DIMENSION_LIST (per dimension, its scales) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // HDF5 dimension scales of a table's datasets (private header), written with the core HDF5 API in the layout of the
 // HDF5 Dimension Scale Specification 1.0 (what libhdf5_hl's H5DS functions write and h5py's `dims` read), so the

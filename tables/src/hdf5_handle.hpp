@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // RAII for HDF5 identifiers and the module's one place that silences HDF5's own error printing (private header).
 #include <hdf5.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // HDF5 types and attribute helpers of the table format.
 #include "hdf5_types.hpp"
 

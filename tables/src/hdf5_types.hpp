@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // HDF5 types and attribute helpers of the table format (private header): the CaseStatus and JumpKind enum types,
 // the /jumps compound record, UTF-8 strings, and typed scalar attributes.

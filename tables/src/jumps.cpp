@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact jumps along the lateral axis (the rules are in table.hpp and tables/README.md).
 #include <algorithm>
 #include <cmath>

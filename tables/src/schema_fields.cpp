@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The array datasets of schema 2 (tables/README.md lists the same, with the reasons).
 #include "schema_fields.hpp"
 

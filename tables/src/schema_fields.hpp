@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The array datasets of schema 2 (private header): path, element type, unit, description, shape and the Table
 // member that holds the data. The one list the writer, the reader and the validation walk.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table sizing and the names of the case statuses.
 #include "ctab/tables/table.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads a schema-2 table: attributes and shapes are checked before anything is allocated from them, then the
 // arrays are read and their contents validated (table_validation.cpp).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Content validation of a table read from a file (every check names the dataset and the first bad index).
 #include "table_validation.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Content checks of a table that has been read (private header): axes, finite values, signs, status values,
 // presence flags, zeros where a slot is empty, failed cases without patches, jumps in range.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes a schema-2 table: groups, array datasets, /jumps, root attributes; into a temporary file renamed at the end.
 #include <unistd.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Google Benchmark: bem2d solve time against grid size, the whole solve (grid, coefficient FFT, constrained CG,
 // result) timed. Hertz sphere R = 40 mm, prescribed load 963 kN, elements 0.2 ... 0.04 mm (argument in um), and
 // the FFT product alone. Run with --benchmark_repetitions=5 for min/median.

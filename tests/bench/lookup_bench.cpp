@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Google Benchmark of the lookup query: one wheel (all slots, all quantities) with its prelookup, and two wheels
 // sharing one prelookup, linear / PCHIP, double / single precision. The table: CTAB_LOOKUP_BLOB (a blob file,
 // e.g. `ctab export build/default_table.h5 -o build/default_table.blob`), else a synthetic table of the default

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Google Benchmark: time per case of each rung of the method ladder through solve_normal_contact (strip grid set-up
 // included: what one table case costs), on the paper's Hertz sphere (963 kN prescribed) and non-Hertzian case
 // (approach 1 mm and 2645 kN prescribed), strips 0.2 mm. Run with --benchmark_repetitions=N for min/median.

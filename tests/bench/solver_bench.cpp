@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Google Benchmark: MIM-1D on the paper's Hertz case with prescribed load (963 kN) at strip widths
 // 0.2, 0.08 and 0.04 mm (paper Table 1). Setup (strip grid, kernel table) stays outside the timed loop.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Runs every ```sh block of the given Markdown files against a build (docs/doc-tests.md says how).
 
 Each block runs under `bash -e -o pipefail` in a fresh scratch checkout: symlinks to the source tree's top-level

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # CTest fixture `package.install`: a fresh `cmake --install` of the build tree into PACKAGE_DIR/prefix, and a
 # check that the installed package names no path of the build or source tree (it must be relocatable).
 # cmake -D BUILD_DIR=... -D PACKAGE_DIR=... -D SOURCE_DIR=... -P install.cmake

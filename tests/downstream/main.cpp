@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Uses the installed ctab: headers, the static ctab::tables and its HDF5 link, ctab::lookup (and the generator
 // libraries when CTAB_DOWNSTREAM_WITH_GENERATOR). Exit code 0 when every call behaves as documented.
 #include <iostream>

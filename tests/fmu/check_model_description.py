@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Checks an extracted FMU against the rules of the FMI 3.0 standard (section 2.4 "FMI Description Schema",
 section 2.5 "FMU Distribution") that an importer relies on, and prints its variables for the C++ harness.
 

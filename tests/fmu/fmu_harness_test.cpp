@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The FMU importer harness (no FMU importer is installable here): `ctab export --format fmu` on a synthetic table,
 // the archive read back with our own ZIP reader, modelDescription.xml checked against the FMI 3.0 rules
 // (check_model_description.py), the wrapper dlopen'ed and driven through the standard Co-Simulation calling

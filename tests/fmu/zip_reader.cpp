@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ZIP reader of the FMU harness (zip_reader.hpp): end record, central directory, local headers, inflate.
 #include "zip_reader.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A minimal ZIP reader for the FMU harness (stored and deflated entries, CRC-32 checked; no ZIP64), so that the
 // test depends on no unzip tool. Throws std::runtime_error on anything it cannot read.

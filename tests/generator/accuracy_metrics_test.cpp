@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accuracy measures of `ctab bench accuracy` (accuracy_metrics.hpp): summaries of solutions and their errors.
 #include "ctab/validation/accuracy_metrics.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The error-controlled dy axis ([axes] tolerance): the tolerance met at random points the generator never solved
 // (several seeds, printed), jumps located to 1 um with one-sided values at the cell's nodes, the same table at one
 // and two threads and from shards, and the config's errors.

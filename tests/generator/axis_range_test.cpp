@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // make_uniform_axis: the validated uniform-axis builder shared by table configs and `ctab geometry`.
 #include <gtest/gtest.h>
 

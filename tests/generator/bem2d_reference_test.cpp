@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bem2d at fine meshes against Hertz, and against CONTACT (../shared/reference/contact, the same discretisation:
 // piecewise-constant elements, Love's coefficients). Label "slow" (about a minute); the CONTACT tests skip when
 // ../shared is absent.

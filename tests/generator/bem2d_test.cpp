@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bem2d, the 2-D boundary-element reference: influence coefficients, FFT product, statuses, Hertz, and CONTACT
 // (../shared/reference/contact; those tests skip when ../shared is absent).
 #include <gtest/gtest.h>

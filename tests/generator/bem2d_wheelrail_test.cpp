@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bem2d against CONTACT on the wheel-rail cases (issue 10: the 2-D reference validated within 1 % against CONTACT's
 // wheel-rail results): Manchester S1002/UIC60, inclination 0, right wheel, single wheel, 78.5 kN normal force, 0.2 mm
 // elements on CONTACT's wheel-rail grid (element centres at multiples of the size from the reference point, which

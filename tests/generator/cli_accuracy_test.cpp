@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench accuracy --quick` (issue 10, "The chart"): the CSV's columns, every rung on every scene, finite
 // errors, MIM-1D ahead of Hertz on the non-Hertzian body, the chart when matplotlib is there, CONTACT columns
 // filled from --reference (when ../shared is there) and a bad --reference refused.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench ... --json` (ctab's own figures only, issue 7), the timing statistics behind it, and
 // scripts/speed_vs_contact.py, which compares those figures with CONTACT's reference CPU times.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `--method hertz|kp|analyn|mim1d|bem2d` end to end: `ctab solve --gap`, the table config key solver.method (into the
 // table's `method` attribute), and `ctab solve --config` with it.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `mpirun -n 2 ctab generate` and `ctab batch` (built with CTAB_WITH_MPI) against a single-process run, byte for
 // byte; a worker that fails reports its units as failed cases; a set-up error on rank 0 stops every rank (no hang).
 #include <gtest/gtest.h>

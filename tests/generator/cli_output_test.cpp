@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ctab's output safety: what `generate -o` may replace, output-directory checks before the sweep, interrupts that
 // leave no temporary file, and write errors on standard output (exit code 3).
 #include <gtest/gtest.h>

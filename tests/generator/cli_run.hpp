@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Runs the built ctab executable (CTAB_EXECUTABLE) without a shell: arguments as given, stdout and stderr captured
 // separately, the exit code (or the signal that ended it), optional stdout descriptor and environment.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ctab at scale through the executable: `generate --shard` + `merge` against one run (byte for byte), and
 // `batch` (index, a bad profile, resume, a changed profile).
 #include <gtest/gtest.h>

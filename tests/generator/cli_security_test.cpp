@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CLI against hostile files and faults (docs/security.md): HDF5 inputs read in a child process whose crash or
 // hang is exit 2 "corrupt table", a foreign HDF5 file never replaced, a full disk (an LD_PRELOAD shim) exit 3 with
 // the old file intact, out of memory exit 3, invalid UTF-8 in `inspect --json`, `query` without --load on a load

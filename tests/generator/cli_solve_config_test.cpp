@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab solve --config FILE --dy D [--load V]` reproduces a table entry: same set-up, roll, load kind and statuses
 // as the generator (compared with gen::generate_table in process).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab bench stability` (issue 10, "Stability where methods fail"): the CSV of one quick scene (columns, every
 // rung, finite results, exit 0) and an unknown --scene refused with exit 2 naming it.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `--surface planar|conformal` and `[solver] surface` (issue 8) end to end: `ctab solve` on the flange root (built-in
 // S1002 on 60E1 1:40, single wheel, dy 6.5 mm), where the strips' own normals turn the force; the JSON names the
 // surface; the config key reaches `ctab solve --config` and the table's `surface` attribute; a bad name is an input

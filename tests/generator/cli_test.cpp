@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ctab executable end to end: JSON output, and a one-line error with a non-zero exit code for bad input.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

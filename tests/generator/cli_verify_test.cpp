@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab verify`: a fine tread table passes, a coarse flange table fails and names the point that reproduces its worst
 // error, every class of cell gets points, the output is the same for a seed at any thread count, and bad arguments
 // are clear errors. Each run's seed is printed to the test log.

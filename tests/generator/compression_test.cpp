@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // [output] compression: the config key, the root attribute compression_level, and the writer's deflate level
 // (deterministic bytes at every level; level 0 writes no filters).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Flange root and flank, conformal surface (the default; --surface conformal): ctab's wheel-rail solve (Manchester
 // S1002/UIC60, inclination 0, right wheel, single-wheel mode, 78.5 kN, 0.2 mm strips) with CONTACT's reference point
 // and with the default (the deepest point, its strips centred on CONTACT's reference point) against CONTACT's

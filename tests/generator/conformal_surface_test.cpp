@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The conformal contact surface (WheelRailOptions::surface) without ../shared: on the built-in S1002/60E1 tread,
 // nearly flat, conformal and planar agree; the force components add up to the prescribed vertical load; the strips'
 // normals follow the curved surface on the flange root.

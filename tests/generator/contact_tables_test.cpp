@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The strip-kernel and Hertz-coefficient tables are compiled in (generated at build time by contact_tables_gen);
 // they must be bit for bit what the run-time computation gives.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Convergence everywhere (issue 8): the cases that ended in max-iterations or numerical-failure before the
 // continuous strip compliances, the active-set cycle detection and the damped steps, and a CI-sized sweep.
 // The full acceptance sweep (0.01 mm, -12..12 mm, ten loads, both modes, both profile sets, each loading kind)

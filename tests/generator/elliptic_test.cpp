@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Carlson integrals and complete elliptic integrals against published values (Carlson 1995 test values;
 // DLMF / Abramowitz & Stegun Table 17.1 for K and E at m = 0.5).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* Fault injection for cli_security_test: preloaded (LD_PRELOAD) into ctab, it makes write, pwrite and writev to any
  * descriptor above 2 fail with ENOSPC once CTAB_ENOSPC_AFTER bytes have been written in the process, as a full
  * file system does. Standard output and error are left alone. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The flange cases against CONTACT (../shared/reference/contact/wheelrail/flange, issue 8), shared by the planar
 // (flange_reference_test) and conformal (conformal_reference_test) suites: issue 8's targets, the per-case guards,

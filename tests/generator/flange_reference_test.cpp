@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Flange root and flank, planar surface: ctab's wheel-rail solve (Manchester S1002/UIC60, inclination 0, right
 // wheel, single-wheel mode, 78.5 kN, 0.2 mm strips) against CONTACT's planar results at dy = 5.5, 6.5 and 7.5 mm
 // (../shared/reference/contact/wheelrail/flange, issue 8), both loadings (vertical load and normal force

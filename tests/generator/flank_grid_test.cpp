@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Why ctab's flank area differs from CONTACT's (issue 8, dy 7.5 mm, planar; docs/validation.md "Flange and flank"). The flank
 // patch is only 8-11 rows of 0.2 mm wide and CONTACT's area counts whole elements (ncon dx ds), which on so narrow a
 // patch lies 5-9 % above the continuum. Two independent checks:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Forces that add up (issue 8): the load balance and the reported force components are the same numbers, so over
 // a wheel's patches sum force_vertical_N equals the prescribed vertical load to 1e-9 relative, case by case, over
 // whole tables written and read back, flange and two-point contact included.

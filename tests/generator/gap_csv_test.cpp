@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gap CSV input: good files parse; every malformed file gives an InputError naming file, line and field.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The gap passes of a prescribed load (wheelrail_contact.cpp, solve_main_for_load): the vertical approach they
 // settle on is the one at which the gap was sampled, so a solve at that prescribed approach carries the same
 // vertical load, to the effect of kGapApproachTolerance_m (1 nm of a ~0.1 mm approach: ~1.5e-5 of the load, Hertz

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hertz statuses (issue 8): a Hertz patch that runs past the gap data is zone-truncated, and over- or underflow
 // on finite input is a numerical failure, never `converged` with an infinite pressure: what MIM-1D reports.
 #include <gtest/gtest.h>

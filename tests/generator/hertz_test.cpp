@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hertz coefficients against the check table of facts/methods_and_tables.md 1.1.2 (AGM-derived) and exact
 // relations for the sphere and for elongated ellipses (where a modulus/parameter mix-up shows).
 #include <gtest/gtest.h>

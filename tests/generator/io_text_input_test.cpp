@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Text-input helpers: user text quoted for messages (bounded, printable, UTF-8 safe), byte-order mark, lines.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The least model at the root-to-flank knee (least_model.hpp step 4, docs/design/knee-indicator.md): `--method auto`
 // (tolerance 0.02) per patch against converged bem2d over a dense sweep of the knee, and against CONTACT's conformal
 // flange cases (../shared/reference/contact/wheelrail/flange). Targets per patch carrying >= 5 % of the normal force:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The under-resolved status (ctab/contact/resolution.hpp) and the least model (ctab/wheelrail/least_model.hpp,
 // `--method auto --tolerance T`): the status fires below 8 strips across the smallest loaded patch of a
 // discretised rung; the least model meets T against MIM-1D at 0.05 mm on a small S1002/UIC60 sweep with fewer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The Manchester benchmark profiles (../shared/profiles: S1002 wheel, UIC60 rail already inclined 1:40, so
 // inclination 0) placed on the default track: the set-up of CONTACT's wheel-rail reference results.

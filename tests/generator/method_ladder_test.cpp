@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The method ladder (normal_contact.hpp): names, dispatch, and the hertz, kp and analyn rungs against Hertz
 // theory, against CONTACT on the paper's non-Hertzian case, on negative-curvature gaps and on bad input.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Robust convergence (paper Figure 7): from 10 different starting potential zones the solve converges to the
 // same answer (1e-6 relative), for both theoretical cases with the paper's prescribed forces.
 #include <gtest/gtest.h>

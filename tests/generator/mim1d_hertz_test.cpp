@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D on the paper's Hertzian case (3.1.1) against analytic Hertz: sphere R = 40 mm on a flat, steel,
 // strips 0.2 mm. Acceptance bar of the foundation issue.
 #include <gtest/gtest.h>

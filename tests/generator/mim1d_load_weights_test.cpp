@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Load weights in MIM-1D (Mim1dSolver::set_load_weights): the prescribed load becomes sum_i w_i N_i, as a
 // wheel-rail conformal patch prescribes its vertical load (w_i the cosine of each strip's normal inclination).
 // Checked against the unweighted solver: the same gap carrying the same normal force must give the same solution,

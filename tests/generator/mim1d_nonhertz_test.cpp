@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D on the paper's non-Hertzian case (3.1.2) against CONTACT (../shared/reference/contact):
 // rolling radius 400 mm, lateral radius 40 mm (y < 0) / 500 mm (y >= 0), on a flat, steel, strips 0.2 mm.
 #include <gtest/gtest.h>

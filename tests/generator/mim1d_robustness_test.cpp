@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stability where methods fail: random (seeded) non-Hertzian gaps, negative curvature, no contact, extreme
 // loads and degenerate inputs always return a status, and never a NaN.
 #include <gtest/gtest.h>

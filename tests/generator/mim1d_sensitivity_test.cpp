@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // First-order predictions from a converged MIM-1D solve (used by the wheel-rail gap passes):
 // Mim1dSolver::approach_sensitivity against finite differences of full solves, and shift_warm_start, which must
 // start a perturbed solve closer to its solution and converge to the cold solve's result.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Noise-aware smoothing of point profiles (issue 8, "No lost patches"): the noise estimate of point_noise.hpp on
 // synthetic noise of known sigma, the automatic choice (smoothing_spline.hpp), the adaptive smoother
 // (adaptive_smoothing.hpp) and their effect on the contact: S1002 and UIC60 1:40 sampled every 0.1 mm along the

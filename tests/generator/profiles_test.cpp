@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Profiles: the built-in S1002 and 60E1 against the Manchester point files, the readers, and malformed files.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Optimal partitioning into quadratic pieces and the C1 refinement of a curvature jump (quadratic_segmentation.hpp),
 // the arcs prior's junction finder: against data whose pieces are known.
 #include "ctab/profiles/quadratic_segmentation.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wheelset roll mirror symmetry: on mirror-image sides roll(-dy) = -roll(dy) to the bit, which lets a mirrored
 // sweep solve the roll only for dy >= 0 (table_generator.cpp, solve_rolls) and keep the table bit-identical.
 #include <gtest/gtest.h>

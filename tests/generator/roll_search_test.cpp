@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The wheelset roll search (issue 11, "Faster on one machine"): FirstContactTracker's windowed scans return the
 // full scan's first-contact height bit for bit, and a roll searched from a neighbour's roll (the sweep's runs) is
 // the roll searched cold, bit for bit, within one lattice step of the root. Swept in 0.01 mm steps across the

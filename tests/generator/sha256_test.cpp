@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SHA-256 known answers: the FIPS 180-4 examples (NIST CSRC "Examples with intermediate values" and the
 // long-message vector) and the padding boundaries (55, 56, 63, 64, 65 bytes: one or two final blocks).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Slots follow the contacts along dy (generator/sweep/include/ctab/sweep/slot_assignment.hpp): unit cases of the
 // serial assignment, and a table on a hollow-worn S1002 (Manchester file with a 1 mm deep, 40 mm wide cosine hollow
 // dug into the tread) whose two tread contacts used to swap slots 0 and 2 between neighbouring dy.

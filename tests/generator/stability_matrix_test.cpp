@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stability matrix (ctab/validation/stability_matrix.hpp, issue 10 "Stability where methods fail"): every rung on
 // hard scenes. Per row: no NaN or inf, bounded time, a known status, "no-contact" without load, and where ctab
 // claims validity (stability_claim_applies: converged, resolved by >= 8 strips, no roughness below two strips

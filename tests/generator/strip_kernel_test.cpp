@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The closed-form strip kernel against independent quadrature: h(t) by graded Gauss-Legendre, and the full
 // influence coefficient by the paper's own route (Eq. 11: regular part by Gauss quadrature, singular part by
 // Love's closed form, Eq. 12).

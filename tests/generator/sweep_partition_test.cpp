@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sweeps in parts: work units and shards (case_partition.hpp), rows moved between tables (table_rows.hpp), shards
 // and their merge (table_shard.hpp) against a single run of the same config.
 #include <gtest/gtest.h>

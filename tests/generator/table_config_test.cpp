@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table configs: the embedded default equals examples/configs/default.toml; every error names key and line.
 #include <gtest/gtest.h>
 

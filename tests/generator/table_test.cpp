@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The table generator and the HDF5 format: round trip, grid values against direct solves, determinism at 1 and 2
 // threads, malformed files rejected with clear errors, failed writes leave no table.
 #include <gtest/gtest.h>

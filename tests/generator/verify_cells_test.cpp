@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab verify`'s classes of cell and its draw (generator/cli/verify_cells.hpp) on small synthetic tables: a located
 // jump (a cell 0.5 um wide) is never sampled, nor the 1 um beside it; its neighbours are jump cells; the knee is the
 // cell where the force changes fastest; a second axis adds the load class; the draw is the same for a seed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Warm start of a sweep (table_generator.hpp, warm_start_previous_rows; Mim1dSolver::solve_for_load with a
 // Mim1dWarmStart): each MIM-1D solve starts from its neighbour in dy inside fixed chains. The table must agree with
 // the cold-start table within the solver tolerance, be bit-identical at 1 and 2 threads, and take fewer iterations.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D on S1002/UIC60 (Manchester profiles, right wheel, single-wheel mode, N = 78.5 kN, steel, strips 0.2 mm)
 // against CONTACT (../shared/reference/contact/wheelrail): paper section 3.2, Figures 8-9.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-case failure reasons (WheelContact::detail, WheelsetPose::detail), the strip cap per patch, and the Hertz
 // path that needs no MIM-1D solver. Built-in S1002 on UIC60 1:40, single wheel.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid wheel-rail geometry on the Manchester set-up against independent references: CONTACT's first-touch
 // height at dy = 0 and the rigid zero-yaw contact table of facts/profiles.md 4.5 (a separate Python computation).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stability where methods fail: a sweep of dy from -15 to +15 mm in 0.01 mm steps, in both modes, returns a
 // status for every case, never NaN, never a crash or hang; the contact moves continuously except at the genuine
 // jumps, which the rigid geometry reports.

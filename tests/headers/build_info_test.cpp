@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The configured header ctab/build_info.hpp (generator/cli/build_info.hpp.in) and `ctab --version`'s text.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """CTest install.python: the installed module ctab_lookup, imported by a Python that is not the build's
 (/usr/bin/python3 with Debian's numpy, a clean environment, PYTHONPATH = the prefix's dist-packages only).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* A C99 program with the table compiled in (a header written by the blob exporter): loads it with
  * ctab_table_open_memory (no file system) and checks its answers against the C library's recorded results.
  *   lookup_c_header_check RESULTS */

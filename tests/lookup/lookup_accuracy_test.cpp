@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accuracy of the interpolated default table (0.1 mm, 0.025 mm at |dy| 6.1-6.5 mm) against a direct solve of the same
 // case (the generator's per-case API) at 1000 random off-grid lateral shifts, linear and PCHIP, where no jump lies
 // between the neighbours (cell rule Interpolate); prints the error distributions (median, p95, max) split into cases

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Blob format: round trip, bit-identical answers to the in-memory load, the C-header path, corruption and version
 // checks, single precision.
 #include <gtest/gtest.h>

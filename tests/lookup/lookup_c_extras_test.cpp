@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C calls beside the query: the version (ctab_version, ctab_version_numbers), a blob's header before loading
 // it (ctab_blob_info_*), and n queries in one call (ctab_query_batch) against ctab_query point by point.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ctab export`, `ctab query` and `ctab bench lookup` end to end on a generated default table: blob and HDF5
 // answer alike, the C header holds the blob, bad input stops with exit code 2 and a message.
 #include <gtest/gtest.h>

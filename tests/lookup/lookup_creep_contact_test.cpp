@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tangential ladder against CONTACT's steady-rolling creep forces (tests may read ../shared): ctab's creep call
 // fed ctab's own normal solution of the same case (ctab/validation/creep_validation.hpp). Bounds: the issue's
 // measured worst plus a margin (the targets, 0.03 mu N tread, 0.05 flange, 0.05 combined, Mz 15 %, are not

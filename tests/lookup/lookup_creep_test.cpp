@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Creep forces: Kalker's coefficients, the Hertzian limits (small creepage, saturation), input checks; the
 // tangential ladder against CONTACT (../shared/reference/contact/wheelrail/tangential) in CreepContact.
 #include <gtest/gtest.h>

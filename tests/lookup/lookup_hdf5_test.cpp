@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The HDF5 path (ctab_lookup_hdf5): a generated schema-2 table written to HDF5 and loaded from it gives answers
 // bit-identical to its blob and to its C header; the C loader accepts HDF5 files, the core refuses them.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile tables and callers: indices that wrap in 32 bits, tampered locations, reserved header bytes, axes without
 // a finite inverse step, values beyond what interpolation or single precision holds, one-value axes, the size limit
 // and an allocation failure while loading. Every case ends in a status, never a crash or a non-finite answer.

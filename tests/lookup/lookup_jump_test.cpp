@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Located jumps on adaptive dy axes (lookup/README.md "Jumps and absent patches", "Prelookup"): the prelookup on
 // axes with steps from 0.1 um to 1 mm, the side a query takes near and inside a located jump's cell, between
 // second-axis rows whose jumps lie at different dy (the load-interpolated jump), PCHIP slopes that stop at a jump

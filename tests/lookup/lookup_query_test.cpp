@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Interpolation and the jump rules of lookup/README.md on synthetic tables (linear data: interpolation is exact).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Real-time properties: no allocation in queries (counting malloc in this binary), concurrent queries from
 // several std::threads equal sequential ones bit for bit.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Query and load statuses: NaN, out of range, not loaded, bad arguments; bad tables refused with their status.
 #include <gtest/gtest.h>
 

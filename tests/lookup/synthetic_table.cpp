@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic tables for the lookup tests (see synthetic_table.hpp).
 #include "synthetic_table.hpp"
 

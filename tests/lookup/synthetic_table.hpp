@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Synthetic contact tables built in memory for the lookup tests: every patch quantity is linear in dy and in the
 // second axis (so linear interpolation is exact inside interpolable cells), a flange slot that appears in one

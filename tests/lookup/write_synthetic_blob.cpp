@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test helper: writes a synthetic table blob (flange jump at 6.5 mm, 3 loads) and the C library's answers to a
 // fixed list of queries (raw ctab_result records), for the Python wrapper test and the HIL loop smoke test.
 //   lookup_write_synthetic_blob OUT.blob OUT.results [OUT.h]   (OUT.h: the blob as a C header, ctab export's format)

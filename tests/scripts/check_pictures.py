@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """The picture scripts on small inputs: each writes a PNG (and the accuracy chart its SVG); the table's dimension
 scales as h5py reads them. Exit 77 (CTest: skipped) where h5py or matplotlib is missing.
 

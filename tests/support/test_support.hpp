@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared helpers for the tests: reference data paths (CONTACT's result files are read by ctab::gen::read_csv,
 // ctab/validation/reference_csv.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The schema-2 table format alone (links only ctab::tables, plus the HDF5 C API to corrupt files): round trip of
 // a small synthetic table with jumps, the status enum, UTF-8 strings and integer attributes; deterministic bytes;
 // every validation failure named with its file, dataset and index.

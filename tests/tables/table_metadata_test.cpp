@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The table's self-description read with the HDF5 C API alone: dimension scales named dy, second, wheel, slot,
 // sample on every array dataset (the HDF5 Dimension Scale Specification's attributes), /wheels/method an enum of the
 // method names, dimensionless units "1", `mirrored` a boolean; and tables in the older forms (method int8, mirrored

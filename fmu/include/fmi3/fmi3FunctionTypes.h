@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fmi3FunctionTypes.h for ctab's FMU wrapper, written from the text of the Functional Mock-up Interface
  * Specification 3.0 (Modelica Association, 2022): the enumerations of section 2.2.3 "Status Returned by Functions"
  * and of the dependency, interval and interface kinds, the callbacks of section 2.2.5 "Creation, Destruction and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fmi3Functions.h for ctab's FMU wrapper, written from the text of the Functional Mock-up Interface Specification
  * 3.0 (Modelica Association, 2022), section 2.2.1 "Header Files and Naming of Functions": the prototypes of every
  * function an FMU exports. A binary FMU (a shared object) exports the plain names (fmi3DoStep, ...), so this header

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fmi3PlatformTypes.h for ctab's FMU wrapper, written from the text of the Functional Mock-up Interface
  * Specification 3.0 (Modelica Association, 2022), section 2.2.2 "Platform Dependent Definitions": the base types of
  * the C interface and the opaque pointers exchanged with the importer. Binary FMUs must use these definitions. */

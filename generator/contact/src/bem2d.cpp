@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bem2d driver: input checks, the potential-area grid (rebuilt larger when a prescribed load needs more), the
 // constrained CG and the result. Method and statuses: ctab/contact/bem2d.hpp.
 #include "ctab/contact/bem2d.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bem2d constrained conjugate gradients: Polonsky & Keer (1999, Wear 231:206-219), steps as in
 // ../shared/facts/methods_and_tables.md 1.6.3, for a prescribed load (as published) or a prescribed approach
 // (the bound-constrained QP min 1/2 p'Ap + p'(h - delta), p >= 0: no mean subtraction, no rescaling).

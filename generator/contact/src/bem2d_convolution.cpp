@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ctab/contact/bem2d_convolution.hpp"
 
 #include <unsupported/Eigen/FFT>

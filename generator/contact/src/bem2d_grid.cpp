@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bem2d element grid: the gap resampled at element centres over the potential contact area.
 #include <algorithm>
 #include <cmath>

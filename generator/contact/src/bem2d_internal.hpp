@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal pieces of bem2d (not installed): the element grid over the potential contact area, the constrained CG
 // solver and the assembly of the NormalSolution. See ctab/contact/bem2d.hpp for the method.

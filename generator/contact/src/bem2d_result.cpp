@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bem2d result assembly: patches of contiguous loaded element rows, one strip per row.
 #include <algorithm>
 

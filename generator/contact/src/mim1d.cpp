@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D solver (mim1d.hpp): set-up on a gap, the prescribed load's measure, the strip lengths of the loads and
 // the solution reported from the active set.
 #include "ctab/contact/mim1d.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D solver (mim1d.hpp): the active set of loaded strips: the starting zone (ANALYN), strips admitted when
 // they interpenetrate after deformation (Eq. 4), and the cycle detection of the admissions.
 #include <algorithm>

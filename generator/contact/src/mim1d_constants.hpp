@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Numerical settings of the MIM-1D solver (mim1d.hpp), shared by its source files; private to the contact library.
 #include <chrono>

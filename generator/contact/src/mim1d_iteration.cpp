@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D solver (mim1d.hpp): the inner iteration of Figure 3 on a fixed or a prescribed-load approach: residual,
 // active-set check, then a Newton or the paper's fixed-point step, damped when it stalls.
 #include <algorithm>

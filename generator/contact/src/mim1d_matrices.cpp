@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D solver (mim1d.hpp): the influence matrix and the Jacobian of the compatibility equations on the active
 // set, the displacement they give, the strips' compliances and the system's right-hand side.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D solver (mim1d.hpp): the solves for a prescribed approach and a prescribed load (the combined iteration,
 // and the paper's outer iteration on the approach as its fallback).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MIM-1D solver (mim1d.hpp): warm starts: a neighbouring solve's loads as the starting set, saved, shifted to
 // first order along a gap change, moved with the grid's origin and extrapolated along a chain.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ctab/contact/solve_status.hpp"
 
 namespace ctab::gen {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // contact_tables_gen OUTPUT: writes the strip-kernel and Hertz-coefficient tables (strip_kernel.hpp, hertz.hpp) as
 // C++ source, every double as a hexadecimal literal (exact), so that ctab_contact compiles them in instead of
 // computing them at every start. Run by the build (generator/CMakeLists.txt); built from the same sources with

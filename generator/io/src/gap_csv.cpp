@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ctab/io/gap_csv.hpp"
 
 #include <array>

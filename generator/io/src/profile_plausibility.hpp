@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Size checks of a profile read from a file that sets its own length unit (Simpack units.len.f): a unit factor
 // off by 2 (or 10) gives a profile that still looks fine to every other check. Bounds, with their reasons:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ctab/profiles/smoothing_spline.hpp"
 
 #include <Eigen/Sparse>

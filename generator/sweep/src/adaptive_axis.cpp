@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The error-controlled dy axis (adaptive_axis.hpp): refinement rounds, then the symmetric node set of a mirrored
 // sweep and the cells' errors on the final axis.
 #include "adaptive_axis.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The error-controlled dy axis of a config with [axes] tolerance (docs/method.md "Error-controlled axes"): the
 // nodes, their solutions (every load, each solved side) and the error measured in every cell. Private to the sweep

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // [axes] tolerance (axis_tolerance_config.hpp): every key optional, each with its range.
 #include "axis_tolerance_config.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // [axes] tolerance of a table config (TableConfig::axis_tolerance): parsed and checked here. Private to the sweep
 // library; throws InputError naming the file, line and key.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Storage of one solved wheel of one case in a table (table_generator.hpp): its status (the solver's mapped onto
 // the table's), its patches in slots with their force components, s origin, equivalent ellipse and strip profiles.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Interpolation error of a dy cell (cell_error.hpp).
 #include "ctab/sweep/cell_error.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A parallel loop whose body may throw (only on failures such as memory: the bodies here compute no statuses from
 // exceptions): nothing escapes an OpenMP loop, so the first exception is kept and rethrown after it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where a stored patch's s coordinate starts on the rail profile (rail_geometry.hpp).
 #include "rail_geometry.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Rail-profile geometry of a stored patch: where its s coordinate starts on the rail. Private to the sweep library.
 #include "ctab/profiles/profile.hpp"

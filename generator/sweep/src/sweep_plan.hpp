@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a table sweep solves (axes, mirroring, sides, threads), shared by the set-up, the schedule, the sweep and
 // the provenance of table_generator.hpp; private to the sweep library.

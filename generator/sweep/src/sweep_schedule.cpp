@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The schedule of a table sweep (sweep_schedule.hpp): roll runs and their mirrors, warm-start chains and their order.
 #include "sweep_schedule.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The schedule of a table sweep: which rolls are solved and in which runs, which rolls mirror them, and the
 // warm-start chains of the wheel solves in the order they are handed out. Private to the sweep library.

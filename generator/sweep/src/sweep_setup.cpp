@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Set-up of a table sweep (table_generator.hpp): the profiles loaded and placed on the track, the solver options
 // from the config, the process-wide tables built, and the plan of what the sweep solves.
 #include <algorithm>

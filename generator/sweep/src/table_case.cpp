@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One table case (table_generator.hpp): the wheelset roll at a lateral shift, one wheel's contact, and a whole case
 // as the sweep solves it (its warm-start chain replayed), for `ctab solve` and the sweep alike.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The table sweep (table_generator.hpp): every selected row's rolls and wheel solves in one OpenMP region, the
 // results stored in the table, the slots, jumps and provenance added; TableSweep for a sweep in parts and
 // generate_table for the whole one.

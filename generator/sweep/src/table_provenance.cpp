@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Provenance attributes of a generated table (table_provenance.hpp).
 #include "table_provenance.hpp"
 

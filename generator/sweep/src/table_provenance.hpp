@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The provenance attributes of a generated table: generator, build, config, profiles (with their SHA-256 and
 // smoothing), solver settings and material. Private to the sweep library.

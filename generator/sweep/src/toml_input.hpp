@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading of the sweep's TOML inputs (the table config and the batch manifest): the file's text, the parse, and
 // errors naming the file, the line and the key. Throws InputError (setup only).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The accuracy bench (accuracy_bench.hpp): its settings, scenes and references.
 #include "ctab/validation/accuracy_bench.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ctab/validation/accuracy_metrics.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rows of the accuracy bench (accuracy_bench.hpp): the worst errors over a row's cases, and their CSV.
 #include <algorithm>
 #include <cmath>

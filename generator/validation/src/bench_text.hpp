@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Text shared by the benches' CSV files: numbers and the names of bem2d references.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-patch errors of the knee sweep and the indicators' summary (knee_sweep.hpp).
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The knee sweep (knee_sweep.hpp): the cases, in parallel.
 #include "ctab/validation/knee_sweep.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CSV reader of reference_csv.hpp.
 #include "ctab/validation/reference_csv.hpp"
 

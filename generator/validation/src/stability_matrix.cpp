@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stability matrix (stability_matrix.hpp): scenes, their references, every rung on every case.
 #include "ctab/validation/stability_matrix.hpp"
 

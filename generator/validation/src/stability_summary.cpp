@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stability matrix's summary table and verdict (stability_matrix.hpp).
 #include <algorithm>
 #include <cmath>

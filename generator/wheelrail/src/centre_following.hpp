@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! CONTACT's reference point during the gap passes (internal to ctab::wheelrail). With CONTACT's reference rule every
 //! gap pass samples in the plane at the interpenetration centre of its own sampling approach, so the passes settle the

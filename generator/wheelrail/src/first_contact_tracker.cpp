@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ctab/wheelrail/first_contact_tracker.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "further_patches.hpp"
 
 #include "ctab/contact/root_finding.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Patches beyond the main one (internal to ctab::wheelrail): a gap minimum outside every window whose gap the
 //! approach closes opens a patch of its own; with several patches a prescribed force is shared through one vertical

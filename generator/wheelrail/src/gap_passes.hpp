@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The prescribed-load fixed point of the main patch (internal to ctab::wheelrail). The gap is sampled with the wheel
 //! lowered by a vertical approach x (PatchProblem::gap_dz): a vertical shift of the wheel is seen along a normal of

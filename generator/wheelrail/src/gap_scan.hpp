@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The coarse gap scan of one side (internal to ctab::wheelrail): the overlap of wheel and rail, a uniform S grid
 //! over it (step at most SideGeometry::kScanStep_m), the local minima of the vertical gap on the grid, and their

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "interpenetration_centre.hpp"
 
 #include <algorithm>

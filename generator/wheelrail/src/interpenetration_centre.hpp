@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! CONTACT's contact reference point (internal to ctab::wheelrail; CONTACT's m_wr_locatecp, step 5): the centre of
 //! the interpenetration region at a vertical approach, weighted by the squared gap integrated along x (~ pen^(5/2)

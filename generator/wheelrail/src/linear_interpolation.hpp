@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Piecewise-linear interpolation of sampled columns (internal to ctab::wheelrail): a patch's samples in s, rail y,
 //! normal angle and separation.

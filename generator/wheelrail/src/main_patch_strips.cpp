@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "main_patch_strips.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The main patch's strip problem and solves (internal to ctab::wheelrail): sampling it, one strip solve with its
 //! warm start, the first-order sensitivities that the gap passes step with, and the vertical-load weights.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Forces of a solved patch (internal to ctab::wheelrail): each strip pushes along its own normal.
 #include <cstddef>

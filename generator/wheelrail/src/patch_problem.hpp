@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! One contact patch's strip problem (internal to ctab::wheelrail): the sampled separation h(s) with its curvatures,
 //! the rail points and normals of the samples, and the patch's MIM-1D solver.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The case's result from its solved patches (internal to ctab::wheelrail): every loaded run of strips of every patch
 //! becomes a ContactPatch with its contact point, forces, centre of pressure and strips; unloaded minima are near

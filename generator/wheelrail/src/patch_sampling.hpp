@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Sampling one patch's strip problem (internal to ctab::wheelrail): the separation h(s) of rail and wheel, the
 //! curvatures A(s), B(s), the rail points and normals, on the plane tangent to the rail at the reference point

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! One wheel-rail case (internal to ctab::wheelrail): its inputs, the workspace it solves in and the result it fills,
 //! shared by the steps of solve_wheel_contact. wheelrail_contact.cpp drives the steps: main_patch_strips (the main

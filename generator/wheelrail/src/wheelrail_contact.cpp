@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The driver of one wheel-rail case: rigid contact search, the main patch in a window that grows while the contact
 // reaches its end, CONTACT's reference point where asked, further patches, results. The steps live in their own
 // files (wheel_case.hpp lists them).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The wheel-rail solve's tuning constants (internal to ctab::wheelrail), one line of reason each. The measurements
 //! behind the chosen values are in docs/design/wheelrail-solve.md.

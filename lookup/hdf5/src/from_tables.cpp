@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tables::Table (schema 2) -> lookup::TableData: the patch quantities gathered per patch in ctab_patch order.
 #include <array>
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loading HDF5 tables or blobs by the file's first bytes; the C loader ctab_table_open_hdf5.
 #include <cstdio>
 

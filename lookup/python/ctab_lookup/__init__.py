@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Thin ctypes wrapper over the ctab lookup C API (ctab/lookup/ctab_lookup.h).
 
 The same compiled code as a HIL target: results are those of the C library, bit for bit. Blobs load through

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Creep forces through the C API's creep section (ctab_creep_prelooked, ctab_creep_batch): the structs mirrored
 with ctypes, the method names, and the conversion of the C results into dicts and numpy arrays. Table.creep and
 Table.creep_batch (__init__.py) call these; docs/creep.md describes the solver, its frames and signs."""

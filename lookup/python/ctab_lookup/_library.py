@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Finding and loading the C library (libctab_lookup, or libctab_lookup_hdf5 for HDF5 tables).
 
 Where the library is looked for, first found wins:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """CTest: the ctypes wrapper returns the C library's results bit for bit.
 
     /usr/bin/python3 check_wrapper.py LIBRARY TABLE.blob RESULTS

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* A C program of someone else's over the installed lookup (CTest install.*): built by a LANGUAGES C CMake project
  * (consumer/CMakeLists.txt) and by plain `cc` with pkg-config (pkg_config_consumer.sh).
  *   query_blob TABLE.blob RESULTS

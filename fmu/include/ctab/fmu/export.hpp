@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! `ctab export --format fmu`: a table blob packed as an FMI 3.0 Co-Simulation FMU for x86-64 Linux around the
 //! prebuilt wrapper shared object installed with ctab (docs/fmu.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The FMU's instantiationToken: a fingerprint of the table blob it carries, written into modelDescription.xml by
 //! the exporter and recomputed by the wrapper from resources/ at instantiation, so that a description and a table

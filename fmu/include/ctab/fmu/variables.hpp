@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The FMU's variables, one table of descriptors read by both the wrapper (value reference -> value) and the
 //! exporter (modelDescription.xml). Adding a variable is one row in variables.cpp plus where its value comes from

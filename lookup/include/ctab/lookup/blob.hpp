@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The ctab table blob: a versioned, checksummed, little-endian serialisation of a TableData, loadable without
 //! HDF5 or a file system (ctab_table_open_memory). Layout: lookup/README.md "Blob format".

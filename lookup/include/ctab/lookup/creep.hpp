@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Creep forces on a contact patch from its normal solution (docs/creep.md): Kalker's simplified theory (FASTSIM)
 //! marched along x on the patch's strips or on its equivalent ellipse, and Kalker's linear theory. Real-time rules

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* ctab lookup: the plain C API of the real-time contact-table interpolation (C99, also valid C++).
  *
  * Load once (ctab_table_open*, the only calls that allocate), then query any number of times from any number of

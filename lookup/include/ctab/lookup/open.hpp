@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Loading a ctab::lookup::Table from a blob in memory or in a file (the core's own loaders; HDF5 tables load
 //! through ctab_lookup_hdf5, ctab/lookup/hdf5_table.hpp).

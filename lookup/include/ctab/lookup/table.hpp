@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! ctab::lookup::Table: a loaded contact table, immutable after load, queried in bounded time.
 //! Built once from a TableData (which it copies into its own layout): per case (i_dy, i_second, wheel) one

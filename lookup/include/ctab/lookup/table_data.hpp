@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The plain description of a contact table that the lookup core loads (from a blob, or converted from an HDF5
 //! table by ctab_lookup_hdf5). No HDF5, no tables/ dependency: the same indices and units as tables::Table

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Per-case outcome stored in a table (`/wheels/status`, an HDF5 enum type carrying these names).
 //! Explicit values: 0 ok, > 0 usable with a caveat, < 0 failure. The generator's SolveStatus maps onto the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Limits and index checks shared by every reader and writer of contact tables: the HDF5 reader and writer
 //! (ctab::tables), the generator's size estimate of a config, and the lookup core's blob loader. Header-only and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The in-memory contact table, schema 2: the contract between the generator (writes) and lookup (reads).
 //! Layout and units are documented in tables/README.md; every array is row-major (C order) with the shape

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! ANALYN: analytical surface-deformation correction of the interpenetration (M. Sh. Sichani, R. Enblom,
 //! M. Berg, "A novel method to model wheel-rail normal contact in vehicle dynamics simulation",

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Full 2-D boundary-element normal-contact solver: the reference rung of the method ladder.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The bem2d matrix-vector product u = A p on an nx x ny element grid by FFT: the coefficients for every offset
 //! (-(n-1) .. n-1 in each direction) are laid out circulantly on a zero-padded grid of at least (2nx-1) x (2ny-1)

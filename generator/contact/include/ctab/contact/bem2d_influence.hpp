@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Influence coefficients of bem2d: normal displacement (difference of the two bodies) due to a uniform unit
 //! pressure on a rectangle, Love (1929, Phil. Trans. R. Soc. A228:377-420), as in CONTACT's elascf_pcwcns:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Options of the 2-D boundary-element reference solver (bem2d.hpp), free of Eigen so that configurations and
 //! the method interface can hold them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The rungs of the method ladder (docs/method.md "The method ladder"), their names on the command line, in configs and in
 //! table attributes. Eigen-free, so that configurations and the CLI can hold a method.

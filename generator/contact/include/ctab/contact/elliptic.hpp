@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Carlson symmetric elliptic integrals and the complete elliptic integrals built on them.
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The general strip problem's geometry: undeformed separation and relative curvatures along the lateral
 //! line of the contact plane.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Where a grid of strips (MIM-1D and the other strip methods) or boundary elements (bem2d) sits relative to the
 //! origin of the gap's lateral coordinate. CONTACT puts element edges there for a gap of its own (the Hertz sphere

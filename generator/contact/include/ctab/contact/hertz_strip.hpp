@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Hertz theory applied to a strip problem: one elliptic patch from the curvatures at the deepest point of
 //! the gap (the classical point-contact model of multibody codes; the cheap end of the speed/accuracy chart).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Kik-Piotrowski (KP) virtual-penetration method: J. Piotrowski, W. Kik, "A simplified model of wheel/rail
 //! contact mechanics for non-Hertzian problems and its application in rail vehicle dynamic simulations",

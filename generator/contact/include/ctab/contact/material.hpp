@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Elastic materials of the two bodies and their combined (effective) modulus, paper Eq. (3).
 

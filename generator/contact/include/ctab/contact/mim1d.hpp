@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! MIM-1D normal contact solver (Qazi, Yin, Sebes, Chollet, Pozzolini, VSD 60(4):1322-1340, 2022).
 //!

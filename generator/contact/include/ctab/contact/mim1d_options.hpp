@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Options of the MIM-1D solver (mim1d.hpp), free of Eigen so that configurations can hold them.
 #include <cstdint>

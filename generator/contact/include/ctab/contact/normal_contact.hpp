@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The one entry point of the method ladder: a normal-contact problem on a gap profile, solved by the rung the
 //! options name (contact_method.hpp). Eigen-free. Never throws: bad input gives SolveStatus::InvalidInput.

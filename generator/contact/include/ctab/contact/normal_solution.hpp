@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Result of a normal-contact solve on a strip problem: per patch, the integral quantities and the strips.
 #include <string>

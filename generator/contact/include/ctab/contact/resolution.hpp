@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Resolution of a discretised rung's result (docs/validation.md "Stability where methods fail"): with fewer than
 //! kMinResolvedStrips strips (elements) across the smallest loaded patch the stability matrix measured MIM-1D up to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Safeguarded scalar root finding (Illinois variant of regula falsi): superlinear, never leaves its bracket.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Shared machinery of the non-iterative strip rungs (Kik-Piotrowski, ANALYN): runs of interpenetrating
 //! strips, patches from per-strip half-lengths and peak pressures, and the prescribed-load solve as a root

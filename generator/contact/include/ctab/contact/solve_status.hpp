@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Per-case outcome of a contact solve. Explicit values: 0 ok, > 0 usable with a caveat, < 0 failure.
 //! Stored per case in tables; never an exception.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Strip half-length compliance c_i = a_i / p0_i [m/Pa] of MIM-1D (paper Eq. 26) and the treatment of the
 //! lateral curvature that enters it.

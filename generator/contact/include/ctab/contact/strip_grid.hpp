@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Uniform strips of width 2b along the lateral line, centred at (k + offset) 2b from y = 0 of the gap's
 //! coordinate, k integer, placed as the gap's strip_alignment says (grid_alignment.hpp: CONTACT's conventions, so

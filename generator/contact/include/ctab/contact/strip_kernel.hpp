@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The strip influence kernel of MIM-1D in closed form (the integration along y of paper Eq. 10 done
 //! analytically).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Exceptions of the generator. They are thrown only at setup and CLI boundaries (input files, options);
 //! per-case solver outcomes are SolveStatus values, never exceptions.

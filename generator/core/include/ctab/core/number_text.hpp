@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Numbers in messages and text output of the generator: 6 significant digits (printf %.6g), the one spelling of
 //! a value across error messages, option descriptions and the benches' CSV files.

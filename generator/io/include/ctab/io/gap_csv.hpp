@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Reader for gap CSV files: header `y_m,h_m,A_per_m,B_per_m` (any order, extra columns ignored), one row per
 //! lateral station, SI units; h_m is the separation before loading (>= 0, to 1 nm). '#' starts a comment line. Errors

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Reading wheel and rail profiles: built-in names or point files, brought to the canonical form of
 //! profile.hpp (SI; y towards the field side; z down; wheel: y = S from the tape circle, flange at y < 0).

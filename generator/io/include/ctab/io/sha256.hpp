@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! SHA-256 (FIPS 180-4) of a byte buffer, as 64 lower-case hex digits. For table provenance.
 #include <cstddef>

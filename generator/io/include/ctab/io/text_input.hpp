@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Helpers shared by the text-file readers: user text quoted in error messages (bounded and printable), a
 //! UTF-8 byte-order mark skipped, and a line reader that counts lines and knows whether the last one was cut.

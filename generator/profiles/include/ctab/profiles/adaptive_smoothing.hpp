@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Noise-aware smoothing of a point profile whose curvature may change fast or jump (`--smoothing auto` on noisy
 //! points). Penalised least squares in summed-chord arc length s, each coordinate x in {y, z}:

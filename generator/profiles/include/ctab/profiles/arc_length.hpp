@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Summed-chord arc length of a point profile, the parameter of its smoothing (smoothing_spline.hpp,
 //! adaptive_smoothing.hpp).

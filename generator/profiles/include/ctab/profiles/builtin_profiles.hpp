@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Built-in standard profiles generated from their definitions (no data files needed):
 //! - S1002 wheel (EN 13715 / UIC 510-2), sections A-H with the coefficients of the function by H. Netter (DLR),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Measurement noise of a point profile, estimated from the points alone (difference-based variance estimation:
 //! Rice 1984; Gasser, Sroka & Jennen-Steinmetz 1986; Hall, Kay & Titterington 1990).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Wheel and rail profiles as functions z(y) in CONTACT's canonical form, SI units:
 //! y lateral [m], positive towards the field side; z [m] positive downwards (rail: depth below the top of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Optimal partitioning of a sampled signal into quadratic pieces (Jackson et al. 2005, "An algorithm for optimal
 //! partitioning of data on an interval"): the boundaries that minimise sum over pieces of (the least-squares residual

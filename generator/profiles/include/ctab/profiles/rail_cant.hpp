@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The cant of a rail head measured from its profile points, to catch a rail file that is already inclined
 //! being inclined again (a silent, large error: the Manchester UIC60 file inclined twice gives an equivalent

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Synthetic measured profiles: points taken from a profile table at a fixed spacing, with a change (a worn
 //! hollow, seeded measurement noise) added to z. Used by the stability matrix and the smoothing tests.

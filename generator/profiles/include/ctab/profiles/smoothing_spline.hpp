@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Weighted cubic smoothing spline of a point profile in summed-chord arc length (CONTACT's smoothing method 1,
 //! Vollebregt et al., CM2022): y(s) and z(s) each minimise sum w_i |x_i - f(s_i)|^2 + lambda int f''^2 ds with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The manifest of `ctab batch` (TOML): one base table config and the wheel and rail profiles to pair.
 //!

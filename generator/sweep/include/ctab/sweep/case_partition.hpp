@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! How a table sweep is split into parts: work units of lateral-shift rows (MPI hands them out one at a time),
 //! shards (`ctab generate --shard K/N`: a contiguous run of units each) and the row sets written as text in shard

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The interpolation error of one dy cell, as the adaptive axis measures it (docs/method.md "Error-controlled
 //! axes") and as tests re-measure it at points the generator never used: one wheel of a case reduced to the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Patch slots of one wheel along the lateral axis, so that a slot follows one contact (tables/README.md, `slot`).
 //!

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Configuration of a contact-table run (TOML). Every key is checked: unknown keys, wrong types, values outside
 //! their range, a missing load, bad axes (make_uniform_axis, axis_range.hpp) and tables too large for memory

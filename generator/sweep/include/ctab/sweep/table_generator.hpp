@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The parallel contact-table generator: every case (lateral shift x load or approach, each wheel) solved with
 //! the wheel-rail contact solver, in OpenMP over the flattened case list.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Rows of a table (one lateral shift: every load, both wheels, every per-case dataset) moved between tables of
 //! the same shape: shards merged, MPI results gathered. Axes, jumps and attributes are not rows.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Shards for array schedulers (Slurm job arrays and the like): `ctab generate --shard K/N` solves only the rows
 //! of shard K (case_partition.hpp) and writes a shard file; `ctab merge` joins the N shard files into the table

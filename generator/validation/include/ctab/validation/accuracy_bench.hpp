@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The accuracy bench (`ctab bench accuracy`): every rung of the method ladder at several discretisations against a
 //! reference, on three scenes:

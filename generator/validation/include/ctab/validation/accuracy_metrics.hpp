@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Accuracy measures of a normal-contact result against a reference (`ctab bench accuracy`): the result of any
 //! rung (a strip problem's NormalSolution or a wheel's WheelContact) reduced to a ContactSummary, and the errors

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The tangential ladder against CONTACT (`ctab bench accuracy --creep-reference DIR`, tests/lookup): CONTACT's
 //! steady-rolling creep forces (wheelrail/tangential/creep_zfix.csv: Manchester profiles, right wheel, mu 0.3, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The knee sweep (`ctab bench knee`, docs/design/knee-indicator.md): a single wheel on its rail over a dense range of
 //! lateral shifts and several vertical loads, solved by a candidate (MIM-1D at a strip width, or the least model)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The reader of CONTACT's result files (../shared/reference/contact/..., read by the tests and by
 //! `ctab bench accuracy --reference DIR`) and of the benches' own CSV output: a header row, then rows of fields

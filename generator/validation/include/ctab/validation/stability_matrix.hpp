@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The stability matrix (`ctab bench stability`, docs/validation.md "Stability where methods fail"): every rung of the method
 //! ladder on hard scenes, each case recorded with its status, error against a reference, iterations and time.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Validated uniform axes {start, stop, step} (lateral shifts, loads, approaches): the one builder shared by the
 //! table config ([axes]) and `ctab geometry --dy-min/--dy-max/--dy-step`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Rigid contact geometry versus lateral shift for a wheelset (both sides), contact-point jumps, and the
 //! equivalent conicity after EN 15302.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The z_ws of first contact of one side at one lateral shift for a sequence of nearby roll angles (the roll
 //! search's function), cheaper than SideGeometry::first_contact_height and bit for bit equal to it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The least model (`--method auto --tolerance T`, docs/method.md): per wheel case the coarsest MIM-1D
 //! strip width whose estimated error in area and max pressure stays within T against MIM-1D at a fine width.

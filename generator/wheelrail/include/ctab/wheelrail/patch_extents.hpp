@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! The loaded patches of a solved wheel as the resolution rule (ctab/contact/resolution.hpp) measures them: the
 //! sweep refines the strip width of a case whose patches span too few strips.

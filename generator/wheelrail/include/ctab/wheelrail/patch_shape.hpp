@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Shape of a solved patch, from its strips' geometry alone (no pressure): the candidate indicators of where
 //! MIM-1D's strip model departs from the 2-D half-space solution (`ctab bench knee`, docs/design/knee-indicator.md)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Normal contact of one wheel on its rail at a given lateral shift and roll: rigid contact search, strip problems
 //! in the inclined contact planes, MIM-1D (or Hertz) per patch, and the loading condition.

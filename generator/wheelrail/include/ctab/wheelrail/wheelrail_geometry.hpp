@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Rigid wheel-rail geometry of one side of a wheelset on tangent track (Manchester benchmark conventions).
 //!

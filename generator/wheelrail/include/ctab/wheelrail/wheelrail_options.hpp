@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! Loading kinds, normal-contact methods and options of the wheel-rail contact (wheelrail_contact.hpp), free of
 //! Eigen so that configurations can hold them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* ctab_lookup_hdf5: the C loader for HDF5 tables (link ctab::lookup_hdf5). */
 #ifndef CTAB_LOOKUP_HDF5_H
 #define CTAB_LOOKUP_HDF5_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 //! ctab_lookup_hdf5: HDF5 tables (schema 2, through ctab::tables) into the lookup core's representation.
 #include <string>
