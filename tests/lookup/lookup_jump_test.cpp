@@ -14,6 +14,7 @@
 #include "ctab/lookup/blob.hpp"
 #include "ctab/lookup/open.hpp"
 #include "ctab/lookup/table.hpp"
+#include "load_and_query.hpp"
 #include "synthetic_table.hpp"
 
 namespace ctab::lookup {
@@ -27,21 +28,8 @@ using test::LocatedOptions;
 const LocatedOptions kOptions;
 const TableData kLocated = test::make_located(kOptions);
 
-Table load(const TableData& data, ctab_interpolation interpolation = CTAB_LINEAR, bool single = false) {
-  Table table;
-  const LoadResult result = table.load(data, {interpolation, single});
-  EXPECT_TRUE(result.ok()) << result.message;
-  return table;
-}
-
-ctab_result query(const Table& table, double dy, double second, int wheel) {
-  ctab_location where;
-  table.prelookup(dy, second, where);
-  ctab_result result;
-  std::memset(&result, 0, sizeof result);
-  table.query(where, wheel, result);
-  return result;
-}
+using test::load;
+using test::query;
 
 double load_of(std::size_t row) { return 60e3 + 20e3 * static_cast<double>(row); }
 

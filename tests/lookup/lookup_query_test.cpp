@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "ctab/lookup/table.hpp"
+#include "load_and_query.hpp"
 #include "synthetic_table.hpp"
 
 namespace ctab::lookup {
@@ -18,21 +19,8 @@ using test::synthetic_value;
 
 constexpr std::size_t kYRail = CTAB_Y_RAIL_M;
 
-Table load(const TableData& data, ctab_interpolation interpolation = CTAB_LINEAR) {
-  Table table;
-  const LoadResult result = table.load(data, {interpolation, false});
-  EXPECT_TRUE(result.ok()) << result.message;
-  return table;
-}
-
-ctab_result query(const Table& table, double dy, double second, int wheel) {
-  ctab_location where;
-  table.prelookup(dy, second, where);
-  ctab_result result;
-  std::memset(&result, 0, sizeof result);
-  table.query(where, wheel, result);
-  return result;
-}
+using test::load;
+using test::query;
 
 double quantity(const ctab_patch& patch, std::size_t q) { return patch.q[q]; }
 
